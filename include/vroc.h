@@ -1,0 +1,212 @@
+/* vroc.h — public API of VROC, the Virtual and Real Object Collisions library.
+ *
+ * A world holds objects (spheres, cubes, superquadrics, convex polyhedra
+ * from OFF files), static when their mass is negative, and the simulation
+ * settings of the thesis's appendix A.  Objects are referred to by small
+ * integer ids, valid until the object is deleted or the world restarted.
+ * Functions return 0 on success and -1 on failure with a one-line message
+ * in the caller's err buffer (no file/line prefix: the caller adds it).
+ * Nothing here prints or exits, except the vrWorld_Write* functions, which
+ * write to the stream they are given.
+ *
+ * ../shared/SPEC.md is the contract for the semantics; the man page
+ * (man/vroc.1) is the user's view of it.
+ */
+#ifndef VROC_H
+#define VROC_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define VROC_VERSION "0.1.0"
+
+typedef struct vrWorld vrWorld;
+typedef int vrObjectId;
+#define VR_NO_OBJECT (-1)
+
+#define VR_NAME_MAX 63   /* bytes of an object name */
+#define VR_PATH_MAX 1024
+
+typedef enum vrObjectType { VR_SPHERE, VR_CUBE, VR_SUPERQUADRIC, VR_POLYHEDRON } vrObjectType;
+
+/* SPEC 1.3 `state` column */
+typedef enum vrMotionState { VR_STATE_STATIC, VR_STATE_MOVING, VR_STATE_SUPPORTED, VR_STATE_REST } vrMotionState;
+
+/* ---- objects (thesis tables A.1–A.4, SPEC 1.1) ------------------------- */
+typedef struct vrObjectDef {
+    vrObjectType type;
+    double linear_vel[3];     /* m/s, (0,0,0) */
+    double angular_vel[3];    /* rad/s, world frame, (0,0,0) */
+    double elasticity;        /* coefficient of restitution 0..1, 1.0 */
+    double mass;              /* kg, != 0; < 0: static. Used when mass_set. */
+    int mass_set;             /* an explicit mass wins over volume */
+    double volume;            /* > 0, 1.0; the mass when mass_set == 0 */
+    double translate[3];      /* modelling-frame origin, (0,0,0) */
+    double rotate_axis[3];    /* rotation axis (!= 0) and angle (rad), when rotate_set */
+    double rotate_angle;
+    int rotate_set;
+    int color[3];             /* 0..255, (255,0,0) */
+    double radius;            /* sphere, 1.0 */
+    int ures, vres;           /* sphere and superquadric tessellation 3..1000, 10 */
+    double size[3];           /* cube half extents, (1,1,1) */
+    double exp1, exp2;        /* superquadric exponents 0.05..2, 1.0 */
+    double a1, a2, a3;        /* superquadric radii, 1.0 */
+    char file[VR_PATH_MAX];   /* polyhedron: OFF file path (as the caller resolved it) */
+    int real;                 /* 1: a model of a real object (see-through drawing) */
+} vrObjectDef;
+
+vrObjectDef vrObjectDef_Default(vrObjectType type);
+
+/* ---- settings (thesis table A.5, SPEC 1.2) ----------------------------- */
+typedef enum vrDistribution { VR_DIST_ROUND_ROBIN, VR_DIST_IMPROVED } vrDistribution;
+
+typedef struct vrSettings {
+    double time_step;         /* >= 0, 0.1 (0 halts time) */
+    double collision_dist;    /* > 0, 0.25 */
+    double internal_step;     /* >= 0, 0 = automatic */
+    double max_linear;        /* > 0, 8.0 */
+    double max_angular;       /* > 0, 4.0 */
+    double force_dir[3];      /* != 0, (0,0,-1) */
+    double force_mag;         /* >= 0, 0 (no global force until `force` or `gravity`) */
+    int heap;                 /* 1: scheduling heap; 0: every pair every internal step */
+    long max_frames;          /* batch `start` limit, 600 */
+    unsigned long long seed;  /* `random` stream seed, 0 */
+    double room;              /* >= 0, 0 = no room for `random` */
+    int gps;                  /* worker processes, 0 = serial */
+    vrDistribution distribution;
+    char lcm_url[256];        /* udpm://239.255.76.67:7667?ttl=0 */
+    char collision_sound[256];/* kept for the sound server (not played yet) */
+    double collision_vol;     /* 0..1, 1.0 */
+} vrSettings;
+
+vrSettings vrSettings_Default(void);
+
+/* ---- the world --------------------------------------------------------- */
+vrWorld *vrWorld_Create(void);
+void vrWorld_Destroy(vrWorld *w);
+
+const vrSettings *vrWorld_Settings(const vrWorld *w);
+/* validates every field (ranges of SPEC 1.2); nothing changes on error.
+ * Takes effect at the next frame, also while running. */
+int vrWorld_SetSettings(vrWorld *w, const vrSettings *s, char *err, size_t errlen);
+
+/* Creates an object with vrObjectDef_Default(type).  Names follow
+ * [A-Za-z_][A-Za-z0-9_.-]* and are at most VR_NAME_MAX bytes; an existing
+ * name is an error here (the shell selects it instead). */
+int vrWorld_CreateObject(vrWorld *w, const char *name, vrObjectType type, vrObjectId *id,
+                         char *err, size_t errlen);
+vrObjectId vrWorld_FindObject(const vrWorld *w, const char *name);
+const char *vrWorld_ObjectName(const vrWorld *w, vrObjectId id);
+int vrWorld_GetObjectDef(const vrWorld *w, vrObjectId id, vrObjectDef *def);
+/* Validates and stores the definition.  Geometry that can fail (an OFF file)
+ * is loaded here, so its error reaches the statement that caused it.  After
+ * the simulation has started, the object is re-instantiated at the next
+ * frame (new shape, mass, pairs) and checked for interpenetration. */
+int vrWorld_SetObjectDef(vrWorld *w, vrObjectId id, const vrObjectDef *def, char *err, size_t errlen);
+int vrWorld_DeleteObject(vrWorld *w, vrObjectId id);
+int vrWorld_ObjectCount(const vrWorld *w);
+/* ids of all objects in creation order; returns the count (fills at most max) */
+int vrWorld_ObjectList(const vrWorld *w, vrObjectId *ids, int max);
+
+/* Instantiates what changed and refuses to go on if objects interpenetrate
+ * (the message names each pair).  vrWorld_Step calls it as needed. */
+int vrWorld_Start(vrWorld *w, char *err, size_t errlen);
+/* Advances `frames` frames of time_step each. */
+int vrWorld_Step(vrWorld *w, long frames, char *err, size_t errlen);
+/* 1 when every dynamic object rests (or there is none) */
+int vrWorld_AllAtRest(const vrWorld *w);
+/* removes all objects; resets time, frames, statistics and the `random`
+ * numbering; keeps settings */
+void vrWorld_Restart(vrWorld *w);
+/* SPEC 1.2 `random N`: N dynamic objects r<k> (and the room walls when
+ * settings.room > 0), drawn from the seeded stream */
+int vrWorld_AddRandom(vrWorld *w, int n, char *err, size_t errlen);
+
+/* ---- state and output -------------------------------------------------- */
+typedef struct vrObjectState {
+    double t;
+    double position[3];       /* modelling-frame origin (centre of mass) */
+    double orientation[4];    /* unit quaternion w,x,y,z, body to world, canonical sign */
+    double linear_vel[3];
+    double angular_vel[3];    /* world frame */
+    vrMotionState state;
+} vrObjectState;
+int vrWorld_GetObjectState(const vrWorld *w, vrObjectId id, vrObjectState *st);
+
+typedef struct vrStats {
+    long frames;
+    double time;
+    int objects, dynamic, resting;
+    long pairs;
+    long subframes;           /* internal steps in the last frame */
+    long subframes_thesis;    /* ceil(time_step*2*max_linear/collision_dist) */
+    long long checks, heap_pops, collisions, klu_solves, klu_refactors, klu_factors;
+    double energy;
+    double frame_ms, sim_ms, render_ms;
+    /* with workers */
+    int gps;
+    long long messages;
+    long long copies;
+    long long gp_checks[64];
+} vrStats;
+void vrWorld_GetStats(const vrWorld *w, vrStats *st);
+/* the renderer reports its time here so that `stats` can show render_ms */
+void vrWorld_NoteRenderTime(vrWorld *w, double ms);
+
+/* SPEC 1.3 formats: `dump` (header + one line per object, sorted by name)
+ * and `stats` (one line of key=value). */
+int vrWorld_WriteDump(const vrWorld *w, FILE *out);
+int vrWorld_WriteStats(const vrWorld *w, FILE *out);
+/* shortest decimal that reads back to the same double, -0 as 0 */
+void vrFormatDouble(char buf[32], double x);
+
+/* ---- drawing ----------------------------------------------------------- */
+/* The drawing mesh of an object, in its body frame: vertex positions and
+ * smooth normals as xyz triples, faces as polygons (counter-clockwise seen
+ * from outside).  smooth = 1 for spheres and superquadrics (Gouraud), 0 for
+ * flat shading.  Pointers stay valid until the object changes. */
+typedef struct vrMesh {
+    int nverts;
+    const double *verts;
+    const double *normals;
+    int nfaces;
+    const int *face_start;    /* nfaces+1 */
+    const int *face_verts;
+    int smooth;
+} vrMesh;
+int vrWorld_GetMesh(vrWorld *w, vrObjectId id, vrMesh *mesh);
+
+/* ---- display (SPEC 4): OSMesa stereo frames, loaded on first use ------- */
+typedef struct vrView {
+    int width, height;        /* 640x512, 16..8192 */
+    double eye[3], look[3], up[3];  /* (0,-8,3), (0,0,1), (0,0,1) */
+    double ipd;               /* 0.064 m */
+    double focal;             /* 0 = |look - eye| */
+    double fov;               /* vertical degrees, 45, 10..120 */
+    int see_through;          /* 0 solid, 1 real objects wireframe, 2 real objects hidden */
+} vrView;
+vrView vrView_Default(void);
+
+typedef struct vrDisplay vrDisplay;
+/* loads the render module (vroc-render.so beside the executable, in
+ * $VROC_RENDER_MODULE, or in the install's lib/vroc) and creates the
+ * off-screen context */
+int vrDisplay_Open(vrDisplay **out, char *err, size_t errlen);
+void vrDisplay_Close(vrDisplay *d);
+/* draws both eyes of the world's current state */
+int vrDisplay_Render(vrDisplay *d, vrWorld *w, const vrView *view, char *err, size_t errlen);
+/* writes the last render as frame-NNNNNN-left.ppm / -right.ppm into dir
+ * (created if missing) */
+int vrDisplay_WriteFrames(const vrDisplay *d, const char *dir, long frame, char *err, size_t errlen);
+/* the last render's pixels: eye 0 left, 1 right; RGB rows top to bottom */
+const unsigned char *vrDisplay_Pixels(const vrDisplay *d, int eye, int *width, int *height);
+const char *vrDisplay_RendererName(const vrDisplay *d);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,39 @@
+#!/bin/sh
+# Runs every test binary in BUILD/tests and every shell transcript test,
+# prints each failure, and ends with one line `N passed, M failed`.
+# Usage: tests/run.sh BUILD_DIR   (BUILD_DIR holds vroc, vroc-gp, tests/)
+set -u
+build=${1:?usage: tests/run.sh BUILD_DIR}
+top=$(cd "$(dirname "$0")/.." && pwd)
+passed=0 failed=0
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+
+add_counts() { # add_counts NAME LOGFILE STATUS: take the binary's summary line
+    line=$(tail -n 1 "$2")
+    case "$line" in
+    *" passed, "*" failed")
+        p=${line%% passed*}; f=${line#*passed, }; f=${f%% failed*}
+        passed=$((passed + p)); failed=$((failed + f))
+        if [ "$3" != 0 ] && [ "$f" = 0 ]; then
+            echo "FAIL $1: exit status $3 after its tests passed"; failed=$((failed + 1))
+        fi ;;
+    *)  echo "FAIL $1: no summary line (exit status $3; crashed?)"; failed=$((failed + 1)) ;;
+    esac
+    grep -E '^(FAIL|    )' "$2" | sed "s|^|[$1] |"
+}
+
+for t in "$build"/tests/test_*; do
+    [ -x "$t" ] || continue
+    name=$(basename "$t")
+    (cd "$top" && VROC_BUILD="$build" "$t") >"$log" 2>&1
+    add_counts "$name" "$log" $?
+done
+for s in "$top"/tests/*.sh; do
+    case "$(basename "$s")" in run.sh) continue ;; esac
+    name=$(basename "$s" .sh)
+    (cd "$top" && VROC_BUILD="$build" sh "$s") >"$log" 2>&1
+    add_counts "$name" "$log" $?
+done
+echo "$passed passed, $failed failed"
+[ "$failed" = 0 ]
