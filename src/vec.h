@@ -221,6 +221,28 @@ static inline mat33 mat33_rotate_tensor(const mat33 *rot, const mat33 *a)
     return mat33_mul(&t, &rt);
 }
 
+/* unit quaternion of a proper rotation matrix (Shepperd's method: pick the
+ * largest of w, x, y, z to divide by, so it stays accurate) */
+static inline quat quat_from_mat33(const mat33 *r)
+{
+    double tr = r->m[0][0] + r->m[1][1] + r->m[2][2], s;
+    quat q;
+    if (tr >= r->m[0][0] && tr >= r->m[1][1] && tr >= r->m[2][2]) {
+        s = 2.0 * sqrt(1.0 + tr);
+        q = quat_make(0.25 * s, (r->m[2][1] - r->m[1][2]) / s, (r->m[0][2] - r->m[2][0]) / s, (r->m[1][0] - r->m[0][1]) / s);
+    } else if (r->m[0][0] >= r->m[1][1] && r->m[0][0] >= r->m[2][2]) {
+        s = 2.0 * sqrt(1.0 + r->m[0][0] - r->m[1][1] - r->m[2][2]);
+        q = quat_make((r->m[2][1] - r->m[1][2]) / s, 0.25 * s, (r->m[0][1] + r->m[1][0]) / s, (r->m[0][2] + r->m[2][0]) / s);
+    } else if (r->m[1][1] >= r->m[2][2]) {
+        s = 2.0 * sqrt(1.0 + r->m[1][1] - r->m[0][0] - r->m[2][2]);
+        q = quat_make((r->m[0][2] - r->m[2][0]) / s, (r->m[0][1] + r->m[1][0]) / s, 0.25 * s, (r->m[1][2] + r->m[2][1]) / s);
+    } else {
+        s = 2.0 * sqrt(1.0 + r->m[2][2] - r->m[0][0] - r->m[1][1]);
+        q = quat_make((r->m[1][0] - r->m[0][1]) / s, (r->m[0][2] + r->m[2][0]) / s, (r->m[1][2] + r->m[2][1]) / s, 0.25 * s);
+    }
+    return quat_normalize(q);
+}
+
 /* ---- poses -------------------------------------------------------------- */
 /* x_world = R x_body + p; R is kept beside q so a query rotates by a matrix */
 typedef struct vrPose { vec3 p; quat q; mat33 R; } vrPose;

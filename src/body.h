@@ -1,0 +1,106 @@
+/* body.h — a simulated rigid body: what its shape and mass give, and its
+ * motion since its last event (SPEC 3.2, ARCHITECTURE "objects move lazily").
+ *
+ * A body stores its state at its last event time t0; its pose at any later
+ * time is computed on demand by motion.c, as a pure function of that state
+ * and of t - t0.  Every process holding a copy of the body computes the same
+ * bits from the same anchor, which is what makes serial and parallel runs
+ * identical.
+ */
+#ifndef VROC_BODY_H
+#define VROC_BODY_H
+
+#include "contact.h"
+
+#define VR_MAX_SUPPORTS 8
+
+/* a body resting on (or sliding over) a partner: n points from the partner
+ * toward the body */
+typedef struct vrSupport { int partner; vec3 n; } vrSupport;
+
+/* the anchor of free flight (thesis 3.2.3, SPEC 3.2) */
+typedef struct vrMotion {
+    double t0;
+    vec3 x0, v0;   /* centre of mass position and velocity at t0 */
+    vec3 a;        /* acceleration: the global force, less supported components */
+    quat q0;       /* orientation at t0, body to world */
+    vec3 L;        /* angular momentum, world frame, constant in free flight */
+    double tcap;   /* time after t0 when |v| reaches max_linear (INFINITY: never) */
+} vrMotion;
+
+/* how torque-free rotation is computed */
+typedef enum {
+    VR_ROT_NONE,      /* static, or L = 0: the orientation never changes */
+    VR_ROT_ISOTROPIC, /* I1 = I2 = I3: omega constant, exact */
+    VR_ROT_SYMMETRIC, /* two equal moments: regular precession, exact */
+    VR_ROT_GENERAL    /* asymmetric: L-preserving splitting integrator */
+} vrRotKind;
+
+#define VR_ROT_CHECKPOINTS 32
+
+/* integrator state at a whole number of steps after t0 (principal frame) */
+typedef struct vrRotState { long step; quat Q; vec3 Pi; } vrRotState;
+
+typedef struct vrRotCache {
+    double h;                       /* fixed sub-step of this anchor */
+    vrRotState anchor;              /* step 0: the state at t0 */
+    vrRotState last;                /* where the last query stopped */
+    vrRotState ring[VR_ROT_CHECKPOINTS]; /* every 64th step, newest last */
+    int nring;
+} vrRotCache;
+
+typedef struct vrBody {
+    int id;
+    int is_static;
+    double mass, inv_mass;          /* static: inv_mass = 0 */
+    mat33 inertia;                  /* about the centre, body frame (kg m^2) */
+    mat33 inv_inertia;
+    vec3 moments;                   /* principal moments, ascending */
+    quat principal;                 /* principal frame -> body frame */
+    int sym_axis;                   /* VR_ROT_SYMMETRIC: index of the distinct moment */
+    double i_min;                   /* smallest principal moment */
+    double r_in, r_out;             /* about the centre (thesis 3.3.1.1) */
+    double elasticity;
+    vrShape shape;
+
+    vrMotion m;
+    vrRotKind rot;
+    vrRotCache rc;
+    int resting;                    /* SPEC 3.5 rest state */
+    int nsupport;
+    vrSupport support[VR_MAX_SUPPORTS];
+    int hit;                        /* an impulse hit it in the current frame */
+} vrBody;
+
+/* settings that shape free flight */
+typedef struct vrFlight {
+    vec3 accel;          /* global force as an acceleration */
+    double max_linear, max_angular;
+} vrFlight;
+
+/* motion.c */
+void vrBody_SetMassProperties(vrBody *b, double mass, const mat33 *inertia_unit, double r_in, double r_out);
+/* (re)anchors b at time t with the given state; clamps |v| and |omega|
+ * (SPEC 3.2: at the start and at every event), recomputes the acceleration
+ * from the supports and the cap time */
+void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vrFlight *f);
+/* re-anchor at t keeping the motion (after a change of settings or supports) */
+void vrBody_Reanchor(vrBody *b, double t, const vrFlight *f);
+void vrBody_Pose(vrBody *b, double t, vrPose *pose);
+void vrBody_Position(const vrBody *b, double t, vec3 *x);
+void vrBody_Velocity(const vrBody *b, double t, vec3 *v);
+/* world angular velocity at t (needs the orientation at t) */
+vec3 vrBody_Omega(const vrBody *b, const vrPose *pose);
+/* velocity of the material point p (world) given the pose at t */
+vec3 vrBody_PointVelocity(const vrBody *b, double t, const vrPose *pose, vec3 p);
+/* world inverse inertia at the pose */
+mat33 vrBody_InvInertiaWorld(const vrBody *b, const vrPose *pose);
+mat33 vrBody_InertiaWorld(const vrBody *b, const vrPose *pose);
+/* speed bound over [t, t + span] for the internal-step grid (SPEC 3.2) */
+double vrBody_SpeedBound(const vrBody *b, double t, double span, double accel, double max_linear);
+/* |L| / I_min: a bound on |omega| in free flight */
+double vrBody_SpinBound(const vrBody *b);
+int vrBody_IsFree(const vrBody *b);  /* dynamic and not resting */
+double vrBody_Energy(vrBody *b, double t, vec3 g);
+
+#endif

@@ -1,0 +1,60 @@
+/* event.c — capturing and applying a body's state: the payload of the
+ * thesis's update message (3.5.2).  Every holder applies the same state with
+ * the same code, so every copy of a body moves the same bits. */
+#include <stdlib.h>
+#include "event.h"
+
+void vrUpdate_Init(vrUpdate *u)
+{
+    u->n = u->cap = 0;
+    u->body = NULL;
+}
+
+void vrUpdate_Free(vrUpdate *u)
+{
+    free(u->body);
+    vrUpdate_Init(u);
+}
+
+void vrBody_Capture(vrBody *b, double t, vrBodyState *st)
+{
+    vrPose p;
+    int i;
+    vrBody_Pose(b, t, &p);
+    st->id = b->id;
+    st->t = t;
+    st->x = p.p;
+    st->q = p.q;
+    vrBody_Velocity(b, t, &st->v);
+    st->L = b->m.L;
+    st->resting = b->resting;
+    st->hit = b->hit;
+    st->nsupport = b->nsupport;
+    for (i = 0; i < b->nsupport; i++) st->support[i] = b->support[i];
+}
+
+vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t)
+{
+    int i;
+    for (i = 0; i < u->n; i++)
+        if (u->body[i].id == b->id) return &u->body[i];
+    if (u->n == u->cap) {
+        int cap = u->cap ? 2 * u->cap : 8;
+        vrBodyState *nb = realloc(u->body, (size_t)cap * sizeof *nb);
+        if (!nb) return NULL;
+        u->body = nb;
+        u->cap = cap;
+    }
+    vrBody_Capture(b, t, &u->body[u->n]);
+    return &u->body[u->n++];
+}
+
+void vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f)
+{
+    int i;
+    b->resting = st->resting;
+    b->hit = st->hit;
+    b->nsupport = st->nsupport;
+    for (i = 0; i < st->nsupport; i++) b->support[i] = st->support[i];
+    vrBody_Anchor(b, st->t, st->x, st->v, st->q, st->L, f);
+}

@@ -1,0 +1,56 @@
+/* event.h — what changes a body's motion (SPEC 3.1), and the state a holder
+ * needs to follow the change (the thesis's `update` message, 3.5.2). */
+#ifndef VROC_EVENT_H
+#define VROC_EVENT_H
+
+#include "body.h"
+
+typedef enum vrEventKind {
+    VR_EV_NONE,
+    VR_EV_IMPACT,        /* distance came down to d while approaching */
+    VR_EV_CONTACT,       /* inside the envelope, approaching faster than v_eps */
+    VR_EV_PUSHOUT,       /* interpenetrating: pushed apart along the normal */
+    VR_EV_SUPPORT_END,
+    VR_EV_SUPPORT_BEGIN
+} vrEventKind;
+
+typedef struct vrEvent {
+    int kind;
+    double t;
+    long long order;     /* the pair's order: (lower id, higher id) */
+    int a, b;            /* object ids, a < b */
+    vec3 n;              /* contact normal, from a toward b */
+    vec3 c;              /* where the impulse acts (centroid of the most approaching points) */
+    double approach;     /* n.u at c, < 0 when approaching */
+    double e;            /* restitution to use */
+    double depth;        /* push-out */
+    int body, partner;   /* support events: body is (no longer) supported by partner */
+} vrEvent;
+
+/* (time, pair order): the order events are taken in */
+static inline int vrEvent_Before(const vrEvent *x, const vrEvent *y)
+{
+    return x->t < y->t || (x->t == y->t && x->order < y->order);
+}
+
+/* a body's new state after an event: everything a holder needs to re-anchor */
+typedef struct vrBodyState {
+    int id;
+    double t;
+    vec3 x, v, L;
+    quat q;
+    int resting, hit;
+    int nsupport;
+    vrSupport support[VR_MAX_SUPPORTS];
+} vrBodyState;
+
+typedef struct vrUpdate { int n, cap; vrBodyState *body; } vrUpdate;
+
+void vrUpdate_Init(vrUpdate *u);
+void vrUpdate_Free(vrUpdate *u);
+/* the slot of body id in u, added as a capture of b at time t if absent */
+vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t);
+void vrBody_Capture(vrBody *b, double t, vrBodyState *st);
+void vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f);
+
+#endif

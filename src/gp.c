@@ -1,0 +1,776 @@
+/* gp.c — a pair owner (thesis 3.4.2 "Graphic Processor control loop").
+ *
+ * For a span [t0, T] on the coordinator's grid, the owner visits grid
+ * points in order; at each it checks the pairs that are due (all of them
+ * with heap = 0; with the heap, those whose expected earliest event time
+ * has come, thesis 3.3.1.2), finds the events there (SPEC 3.1), and stops at
+ * the first grid point that has any.  An impact found at a grid point is
+ * moved back to its moment by bisection of the step.  Pairs are evaluated
+ * with the same operations whatever the heap mode or the owner, so the
+ * outcome is the same; the heap only skips checks that cannot matter.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "gp.h"
+#include "heap.h"
+
+#define BISECTIONS 48
+#define TIE_SPEED 1e-9        /* m/s: points this close to the most approaching one share the impulse */
+#define CONTAIN_TOL 1e-9      /* m: support containment in the contact plane */
+
+typedef struct vrPair {
+    int a, b;                 /* object ids, a < b */
+    long long order;
+    int inside;               /* distance <= d at t_check */
+    int scheduled;            /* 0 when both bodies are frozen (static or resting) */
+    int flagged;              /* to be evaluated at the next span start */
+    double t_check;
+    vrWalkCache cache;
+} vrPair;
+
+/* what an evaluation changed, so Advance can take it back */
+typedef struct vrUndo {
+    int pair;
+    double at;                /* the evaluation time */
+    int inside;
+    double t_check;
+    double key;               /* INFINITY: was not in the heap */
+} vrUndo;
+
+typedef struct vrIntList { int n, cap; int *v; } vrIntList;
+
+struct vrOwner {
+    vrParams p;
+    double v_rest;            /* sqrt(2 |a| d), SPEC 3.1 */
+    vrBody **body;            /* by id, NULL when not held */
+    vrIntList *body_pairs;    /* by id: indices of its pairs */
+    int bodycap, nheld;
+    vrPair *pair;
+    int npair, paircap;
+    vrHeap heap;
+    vrIntList flagged, due;
+    vrUndo *undo;
+    int nundo, undocap;
+    vrEvent *pending;         /* events found at pending_t not yet taken */
+    int npending, pendcap;
+    double pending_t;
+    vrEvent *found;           /* scratch: the events of one grid point */
+    int nfound, foundcap;
+    vrResponder *responder;
+    long long checks, heap_pops;
+};
+
+/* ---- small containers ------------------------------------------------------ */
+
+static int grow(void **arr, int *cap, int need, size_t size)
+{
+    int c = *cap ? *cap : 16;
+    void *n;
+    if (need <= *cap) return 0;
+    while (c < need) c *= 2;
+    n = realloc(*arr, (size_t)c * size);
+    if (!n) return -1;
+    *arr = n;
+    *cap = c;
+    return 0;
+}
+
+static int list_push(vrIntList *l, int v)
+{
+    if (grow((void **)&l->v, &l->cap, l->n + 1, sizeof *l->v) != 0) return -1;
+    l->v[l->n++] = v;
+    return 0;
+}
+
+static int push_event(vrEvent **arr, int *n, int *cap, const vrEvent *ev)
+{
+    if (grow((void **)arr, cap, *n + 1, sizeof **arr) != 0) return -1;
+    (*arr)[(*n)++] = *ev;
+    return 0;
+}
+
+/* ---- life cycle ---------------------------------------------------------------- */
+
+vrOwner *vrOwner_Create(void)
+{
+    vrOwner *o = calloc(1, sizeof *o);
+    if (!o) return NULL;
+    vrHeap_Init(&o->heap);
+    o->responder = vrResponder_Create();
+    o->pending_t = -INFINITY;
+    o->p.use_heap = 1;
+    if (!o->responder) {
+        vrOwner_Free(o);
+        return NULL;
+    }
+    return o;
+}
+
+void vrOwner_Free(vrOwner *o)
+{
+    int i;
+    if (!o) return;
+    for (i = 0; i < o->bodycap; i++) free(o->body_pairs[i].v);
+    free(o->body_pairs);
+    free(o->body);
+    free(o->pair);
+    vrHeap_Free(&o->heap);
+    free(o->flagged.v);
+    free(o->due.v);
+    free(o->undo);
+    free(o->pending);
+    free(o->found);
+    vrResponder_Free(o->responder);
+    free(o);
+}
+
+static int frozen(const vrBody *b) { return b->is_static || b->resting; }
+
+static void flag(vrOwner *o, int pi)
+{
+    if (!o->pair[pi].flagged) {
+        o->pair[pi].flagged = 1;
+        list_push(&o->flagged, pi);
+    }
+}
+
+/* pairs of two frozen bodies cannot change until one of them wakes: they are
+ * not scheduled (SPEC 3.3: a resting body and its supports) */
+static void update_schedule(vrOwner *o, int pi)
+{
+    vrPair *p = &o->pair[pi];
+    p->scheduled = !(frozen(o->body[p->a]) && frozen(o->body[p->b]));
+    if (!p->scheduled) vrHeap_Remove(&o->heap, pi);
+}
+
+void vrOwner_SetParams(vrOwner *o, const vrParams *p)
+{
+    int i;
+    o->p = *p;
+    o->v_rest = sqrt(2.0 * vec3_len(p->flight.accel) * p->d);
+    if (!p->use_heap) {
+        vrHeap_Free(&o->heap);
+        vrHeap_Init(&o->heap);
+    }
+    for (i = 0; i < o->npair; i++) flag(o, i);
+}
+
+int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
+{
+    if (id >= o->bodycap) {
+        int old = o->bodycap, cap = old, i;
+        if (grow((void **)&o->body, &cap, id + 1, sizeof *o->body) != 0) return -1;
+        cap = old;
+        if (grow((void **)&o->body_pairs, &cap, id + 1, sizeof *o->body_pairs) != 0) return -1;
+        for (i = old; i < cap; i++) {
+            o->body[i] = NULL;
+            o->body_pairs[i].n = o->body_pairs[i].cap = 0;
+            o->body_pairs[i].v = NULL;
+        }
+        o->bodycap = cap;
+    }
+    if (!o->body[id]) o->nheld++;
+    o->body[id] = b;
+    return 0;
+}
+
+int vrOwner_BodyCount(const vrOwner *o) { return o->nheld; }
+
+int vrOwner_AddPair(vrOwner *o, int a, int b)
+{
+    vrPair *p;
+    if (grow((void **)&o->pair, &o->paircap, o->npair + 1, sizeof *o->pair) != 0) return -1;
+    p = &o->pair[o->npair];
+    memset(p, 0, sizeof *p);
+    p->a = a;
+    p->b = b;
+    p->order = ((long long)a << 32) | (long long)b;
+    p->t_check = -INFINITY;
+    if (list_push(&o->body_pairs[a], o->npair) != 0 || list_push(&o->body_pairs[b], o->npair) != 0) return -1;
+    o->npair++;
+    update_schedule(o, o->npair - 1);
+    flag(o, o->npair - 1);
+    return 0;
+}
+
+long vrOwner_PairCount(const vrOwner *o) { return o->npair; }
+
+/* rebuilds pair indices after pairs were removed */
+static void reindex(vrOwner *o)
+{
+    int i;
+    vrHeap_Free(&o->heap);
+    vrHeap_Init(&o->heap);
+    o->flagged.n = 0;
+    for (i = 0; i < o->bodycap; i++) o->body_pairs[i].n = 0;
+    for (i = 0; i < o->npair; i++) {
+        vrPair *p = &o->pair[i];
+        list_push(&o->body_pairs[p->a], i);
+        list_push(&o->body_pairs[p->b], i);
+        p->flagged = 0;
+        flag(o, i);
+        update_schedule(o, i);
+    }
+}
+
+void vrOwner_DropBody(vrOwner *o, int id)
+{
+    int i, k = 0;
+    if (id >= o->bodycap || !o->body[id]) return;
+    for (i = 0; i < o->npair; i++)
+        if (o->pair[i].a != id && o->pair[i].b != id) o->pair[k++] = o->pair[i];
+    o->npair = k;
+    o->body[id] = NULL;
+    o->nheld--;
+    o->npending = 0;
+    o->nundo = 0;
+    reindex(o);
+}
+
+static int event_involves(const vrEvent *ev, const int *ids, int n)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (ev->a == ids[i] || ev->b == ids[i]) return 1;
+    return 0;
+}
+
+void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
+{
+    int i, j, k = 0;
+    for (i = 0; i < n; i++) {
+        const vrIntList *l;
+        if (ids[i] >= o->bodycap || !o->body[ids[i]]) continue;
+        l = &o->body_pairs[ids[i]];
+        for (j = 0; j < l->n; j++) {
+            update_schedule(o, l->v[j]);
+            flag(o, l->v[j]);
+        }
+    }
+    for (i = 0; i < o->npending; i++)
+        if (!event_involves(&o->pending[i], ids, n)) o->pending[k++] = o->pending[i];
+    o->npending = k;
+}
+
+/* ---- undo log ------------------------------------------------------------- */
+
+static void remember(vrOwner *o, int pi, double at)
+{
+    vrUndo *u;
+    if (grow((void **)&o->undo, &o->undocap, o->nundo + 1, sizeof *o->undo) != 0) return;
+    u = &o->undo[o->nundo++];
+    u->pair = pi;
+    u->at = at;
+    u->inside = o->pair[pi].inside;
+    u->t_check = o->pair[pi].t_check;
+    u->key = vrHeap_Contains(&o->heap, pi) ? vrHeap_Key(&o->heap, pi) : INFINITY;
+}
+
+void vrOwner_Advance(vrOwner *o, double t)
+{
+    int i;
+    for (i = o->nundo - 1; i >= 0; i--) {
+        const vrUndo *u = &o->undo[i];
+        vrPair *p = &o->pair[u->pair];
+        if (u->at <= t) continue;
+        p->inside = u->inside;
+        p->t_check = u->t_check;
+        if (!o->p.use_heap || !p->scheduled) continue;
+        if (u->key == INFINITY) vrHeap_Remove(&o->heap, u->pair);
+        else vrHeap_Set(&o->heap, u->pair, u->key, p->order);
+    }
+    o->nundo = 0;
+    if (o->pending_t != t) o->npending = 0;
+}
+
+/* ---- evaluation -------------------------------------------------------------- */
+
+static void set_key(vrOwner *o, int pi, double key)
+{
+    vrPair *p = &o->pair[pi];
+    if (!o->p.use_heap || !p->scheduled) return;
+    if (key == INFINITY) vrHeap_Remove(&o->heap, pi);
+    else vrHeap_Set(&o->heap, pi, key, p->order);
+}
+
+static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPose *pb, vrContact *c)
+{
+    vrBody *A = o->body[p->a], *B = o->body[p->b];
+    vrBody_Pose(A, t, pa);
+    vrBody_Pose(B, t, pb);
+    o->checks++;
+    if (region) vrContact_Region(&A->shape, pa, &B->shape, pb, o->p.d, &p->cache, c);
+    else vrContact_Distance(&A->shape, pa, &B->shape, pb, &p->cache, c);
+}
+
+/* the first time in (lo, hi] with distance <= d: exactly BISECTIONS halvings,
+ * the event at the upper end of the final bracket (SPEC 3.2) */
+static double bisect(vrOwner *o, vrPair *p, double lo, double hi)
+{
+    vrPose pa, pb;
+    vrContact c;
+    int i;
+    for (i = 0; i < BISECTIONS; i++) {
+        double mid = lo + 0.5 * (hi - lo);
+        query(o, p, mid, 0, &pa, &pb, &c);
+        if (c.dist <= o->p.d) hi = mid; else lo = mid;
+    }
+    return hi;
+}
+
+/* relative normal velocities of the region points, b's minus a's */
+typedef struct vrApproach {
+    double u[VR_REGION_MAX];
+    double umin, umax;
+    vec3 centroid;            /* of the points within TIE_SPEED of umin */
+    vec3 region_centre;
+} vrApproach;
+
+static void approach(vrOwner *o, const vrPair *p, double t, const vrPose *pa, const vrPose *pb,
+                     const vrContact *c, vrApproach *ap)
+{
+    vrBody *A = o->body[p->a], *B = o->body[p->b];
+    vec3 sum = vec3_zero(), all = vec3_zero();
+    int i, ties = 0;
+    ap->umin = INFINITY;
+    ap->umax = -INFINITY;
+    for (i = 0; i < c->npoints; i++) {
+        vec3 u = vec3_sub(vrBody_PointVelocity(B, t, pb, c->point[i]), vrBody_PointVelocity(A, t, pa, c->point[i]));
+        ap->u[i] = vec3_dot(c->n, u);
+        if (ap->u[i] < ap->umin) ap->umin = ap->u[i];
+        if (ap->u[i] > ap->umax) ap->umax = ap->u[i];
+        all = vec3_add(all, c->point[i]);
+    }
+    for (i = 0; i < c->npoints; i++)
+        if (ap->u[i] <= ap->umin + TIE_SPEED) {
+            sum = vec3_add(sum, c->point[i]);
+            ties++;
+        }
+    ap->centroid = ties ? vec3_scale(sum, 1.0 / ties) : c->pa;
+    ap->region_centre = c->npoints ? vec3_scale(all, 1.0 / c->npoints) : c->pa;
+}
+
+static void fill_event(vrEvent *ev, int kind, double t, const vrPair *p, const vrContact *c)
+{
+    memset(ev, 0, sizeof *ev);
+    ev->kind = kind;
+    ev->t = t;
+    ev->order = p->order;
+    ev->a = p->a;
+    ev->b = p->b;
+    ev->n = c->n;
+    ev->body = ev->partner = -1;
+}
+
+static double restitution(const vrOwner *o, const vrPair *p, double speed)
+{
+    const vrBody *A = o->body[p->a], *B = o->body[p->b];
+    if (speed < o->v_rest) return 0.0;   /* SPEC 3.1: slow impacts do not bounce */
+    return fmin(A->elasticity, B->elasticity);
+}
+
+static void impulse_event(vrOwner *o, vrEvent *ev, int kind, double t, const vrPair *p,
+                          const vrContact *c, const vrApproach *ap)
+{
+    fill_event(ev, kind, t, p, c);
+    ev->c = ap->centroid;
+    ev->approach = ap->umin;
+    ev->e = restitution(o, p, -ap->umin);
+}
+
+typedef struct { double x, y; } vrP2;
+
+static int cmp_p2(const void *a, const void *b)
+{
+    const vrP2 *p = a, *q = b;
+    return p->x < q->x ? -1 : p->x > q->x ? 1 : p->y < q->y ? -1 : p->y > q->y;
+}
+
+static double cross2(vrP2 o, vrP2 a, vrP2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+/* distance from the origin to segment ab */
+static double seg_dist(vrP2 a, vrP2 b)
+{
+    double ex = b.x - a.x, ey = b.y - a.y, l2 = ex * ex + ey * ey;
+    double s = l2 > 0 ? -(a.x * ex + a.y * ey) / l2 : 0;
+    s = s < 0 ? 0 : s > 1 ? 1 : s;
+    return hypot(a.x + s * ex, a.y + s * ey);
+}
+
+/* is q inside the convex hull of the region points (all on the plane normal
+ * to nrm), within CONTAIN_TOL?  Andrew's monotone chain, then edge tests. */
+static int region_contains(const vec3 *pts, int n, vec3 nrm, vec3 q)
+{
+    vec3 t1 = vec3_orthogonal(nrm), t2 = vec3_cross(nrm, t1);
+    vrP2 p[VR_REGION_MAX], h[2 * VR_REGION_MAX];
+    int i, k = 0, lower;
+    for (i = 0; i < n; i++) {
+        vec3 d = vec3_sub(pts[i], q);
+        p[i].x = vec3_dot(d, t1);
+        p[i].y = vec3_dot(d, t2);
+    }
+    qsort(p, (size_t)n, sizeof *p, cmp_p2);
+    for (i = 0; i < n; i++) {
+        while (k >= 2 && cross2(h[k - 2], h[k - 1], p[i]) <= 0) k--;
+        h[k++] = p[i];
+    }
+    for (i = n - 2, lower = k + 1; i >= 0; i--) {
+        while (k >= lower && cross2(h[k - 2], h[k - 1], p[i]) <= 0) k--;
+        h[k++] = p[i];
+    }
+    if (k > 1) k--;                                /* the last point repeats the first */
+    if (k == 1) return hypot(h[0].x, h[0].y) <= CONTAIN_TOL;
+    if (k == 2) return seg_dist(h[0], h[1]) <= CONTAIN_TOL;
+    for (i = 0; i < k; i++) {
+        vrP2 a = h[i], b = h[(i + 1) % k], o = {0, 0};
+        double len = hypot(b.x - a.x, b.y - a.y);
+        if (len > 0 && cross2(a, b, o) / len < -CONTAIN_TOL) return 0;
+    }
+    return 1;
+}
+
+static int has_support(const vrBody *x, int partner)
+{
+    int i;
+    for (i = 0; i < x->nsupport; i++)
+        if (x->support[i].partner == partner) return 1;
+    return 0;
+}
+
+/* SPEC 3.1: x is supported through this contact when its partner is static,
+ * resting or supported, the force presses x onto it, nothing approaches or
+ * separates faster than v_eps, and the reaction can balance the force: the
+ * line through x's centre of mass along the contact normal meets the contact
+ * region (on a level support this is the projection along the force; on a
+ * slope it is where a frictionless reaction can act) */
+static int supports(const vrOwner *o, const vrBody *x, const vrBody *y, vec3 n_yx, const vrPose *px,
+                    const vrContact *c, const vrApproach *ap)
+{
+    vec3 g = o->p.flight.accel, q;
+    double gl = vec3_len(g);
+    if (frozen(x) || !(frozen(y) || y->nsupport > 0) || c->npoints == 0) return 0;
+    if (gl == 0 || vec3_dot(g, n_yx) > -1e-6 * gl) return 0;
+    if (ap->umin < -VR_V_EPS || ap->umax > VR_V_EPS) return 0;
+    q = vec3_madd(px->p, vec3_dot(vec3_sub(c->point[0], px->p), n_yx), n_yx);
+    return region_contains(c->point, c->npoints, n_yx, q);
+}
+
+static int support_event(vrEvent *ev, int kind, double t, const vrPair *p, const vrContact *c,
+                         int body, int partner, vec3 n_yx, vec3 centre)
+{
+    fill_event(ev, kind, t, p, c);
+    ev->body = body;
+    ev->partner = partner;
+    ev->n = n_yx;
+    ev->c = centre;
+    return 1;
+}
+
+/* support begins or ends for either body of an inside pair */
+static int support_change(vrOwner *o, vrEvent *ev, double t, const vrPair *p, const vrPose *pa,
+                          const vrPose *pb, const vrContact *c, const vrApproach *ap)
+{
+    int side;
+    for (side = 0; side < 2; side++) {
+        int x = side ? p->b : p->a, y = side ? p->a : p->b;
+        vec3 n_yx = side ? c->n : vec3_neg(c->n);
+        int now, was;
+        if (frozen(o->body[x])) continue;
+        now = supports(o, o->body[x], o->body[y], n_yx, side ? pb : pa, c, ap);
+        was = has_support(o->body[x], y);
+        if (was && !now) return support_event(ev, VR_EV_SUPPORT_END, t, p, c, x, y, n_yx, ap->region_centre);
+        if (!was && now && o->body[x]->nsupport < VR_MAX_SUPPORTS)
+            return support_event(ev, VR_EV_SUPPORT_BEGIN, t, p, c, x, y, n_yx, ap->region_centre);
+    }
+    return 0;
+}
+
+static int lost_support(vrOwner *o, vrEvent *ev, double t, const vrPair *p, const vrContact *c)
+{
+    if (has_support(o->body[p->a], p->b))
+        return support_event(ev, VR_EV_SUPPORT_END, t, p, c, p->a, p->b, vec3_neg(c->n), c->pa);
+    if (has_support(o->body[p->b], p->a))
+        return support_event(ev, VR_EV_SUPPORT_END, t, p, c, p->b, p->a, c->n, c->pb);
+    return 0;
+}
+
+/* events of a pair inside the envelope at t, by priority */
+static int inside_events(vrOwner *o, vrEvent *ev, double t, const vrPair *p, const vrPose *pa,
+                         const vrPose *pb, const vrContact *c)
+{
+    vrApproach ap;
+    if (c->dist < -VR_PENETRATION_TOL) {
+        fill_event(ev, VR_EV_PUSHOUT, t, p, c);
+        ev->depth = -c->dist;
+        ev->c = c->pa;
+        return 1;
+    }
+    approach(o, p, t, pa, pb, c, &ap);
+    if (ap.umin < -VR_V_EPS) {
+        impulse_event(o, ev, VR_EV_CONTACT, t, p, c, &ap);
+        return 1;
+    }
+    return support_change(o, ev, t, p, pa, pb, c, &ap);
+}
+
+/* an impact at tau if the contact points approach there */
+static int impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
+{
+    vrPose pa, pb;
+    vrContact c;
+    vrApproach ap;
+    query(o, p, tau, 1, &pa, &pb, &c);
+    if (c.npoints == 0) return 0;
+    approach(o, p, tau, &pa, &pb, &c, &ap);
+    if (ap.umin >= 0) return 0;
+    impulse_event(o, ev, VR_EV_IMPACT, tau, p, &c, &ap);
+    return 1;
+}
+
+/* Evaluates pair pi at t.  t_prev is the previous grid point (t_prev == t at
+ * a span start, where no step can be bisected).  Returns 1 with *ev when the
+ * pair has an event. */
+static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
+{
+    vrPair *p = &o->pair[pi];
+    vrPose pa, pb;
+    vrContact c;
+    remember(o, pi, t);
+    query(o, p, t, 0, &pa, &pb, &c);
+    p->t_check = t;
+    if (c.dist > o->p.d) {
+        int was_inside = p->inside;
+        p->inside = 0;
+        set_key(o, pi, vrSchedule_Key(o->body[p->a], o->body[p->b], t, c.dist, o->p.d, &o->p.flight));
+        return was_inside || t == t_prev ? lost_support(o, ev, t, p, &c) : 0;
+    }
+    set_key(o, pi, t);
+    if (!p->inside && t > t_prev && impact(o, ev, p, bisect(o, p, t_prev, t))) return 1;
+    p->inside = 1;
+    query(o, p, t, 1, &pa, &pb, &c);
+    o->checks--;                         /* the same query again, with the region */
+    return inside_events(o, ev, t, p, &pa, &pb, &c);
+}
+
+/* ---- the look-ahead ------------------------------------------------------------ */
+
+static int cmp_order(const void *x, const void *y, const vrOwner *o)
+{
+    long long a = o->pair[*(const int *)x].order, b = o->pair[*(const int *)y].order;
+    return a < b ? -1 : a > b;
+}
+
+static const vrOwner *sort_owner; /* qsort has no context argument in C99 */
+static int cmp_pairs(const void *x, const void *y) { return cmp_order(x, y, sort_owner); }
+
+static int cmp_events(const void *x, const void *y)
+{
+    const vrEvent *a = x, *b = y;
+    return vrEvent_Before(a, b) ? -1 : vrEvent_Before(b, a) ? 1 : 0;
+}
+
+/* keeps the events found at one instant; returns the first */
+static int take_first(vrOwner *o, double at, vrEvent *ev)
+{
+    int i;
+    qsort(o->found, (size_t)o->nfound, sizeof *o->found, cmp_events);
+    *ev = o->found[0];
+    o->npending = 0;
+    for (i = 0; i < o->nfound; i++)
+        if (o->found[i].t == at) push_event(&o->pending, &o->npending, &o->pendcap, &o->found[i]);
+    o->pending_t = at;
+    return 1;
+}
+
+static void evaluate_into_found(vrOwner *o, int pi, double t, double t_prev, int keep)
+{
+    vrEvent ev;
+    if (!o->pair[pi].scheduled) return;
+    if (evaluate(o, pi, t, t_prev, &ev) && keep) push_event(&o->found, &o->nfound, &o->foundcap, &ev);
+}
+
+/* k = 0: pairs whose bodies changed are evaluated at the span start; events
+ * still pending there (found at this instant, bodies unchanged) stand */
+static void span_start(vrOwner *o, double ts, int allow)
+{
+    int i;
+    sort_owner = o;
+    qsort(o->flagged.v, (size_t)o->flagged.n, sizeof *o->flagged.v, cmp_pairs);
+    for (i = 0; i < o->flagged.n; i++) {
+        int pi = o->flagged.v[i];
+        o->pair[pi].flagged = 0;
+        evaluate_into_found(o, pi, ts, ts, allow);
+    }
+    o->flagged.n = 0;
+    if (allow && o->pending_t == ts)
+        for (i = 0; i < o->npending; i++) push_event(&o->found, &o->nfound, &o->foundcap, &o->pending[i]);
+    o->npending = 0;
+}
+
+static void collect_due(vrOwner *o, double t)
+{
+    double key;
+    int id;
+    o->due.n = 0;
+    if (!o->p.use_heap) {
+        for (id = 0; id < o->npair; id++)
+            if (o->pair[id].scheduled) list_push(&o->due, id);
+        return;
+    }
+    while ((id = vrHeap_Top(&o->heap, &key)) >= 0 && key <= t) {
+        vrHeap_Pop(&o->heap);
+        o->heap_pops++;
+        list_push(&o->due, id);
+    }
+    sort_owner = o;
+    qsort(o->due.v, (size_t)o->due.n, sizeof *o->due.v, cmp_pairs);
+}
+
+int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *ev)
+{
+    long k = 1;
+    int i;
+    o->nfound = 0;
+    span_start(o, g->t0, allow_instant);
+    if (o->nfound) return take_first(o, g->t0, ev);
+    while (k <= g->n) {
+        double t = vrGrid_Point(g, k), key;
+        collect_due(o, t);
+        for (i = 0; i < o->due.n; i++) evaluate_into_found(o, o->due.v[i], t, vrGrid_Point(g, k - 1), 1);
+        if (o->nfound) return take_first(o, t, ev);
+        if (!o->p.use_heap) { k++; continue; }
+        if (vrHeap_Top(&o->heap, &key) < 0) break;
+        k = k + 1 > vrSchedule_FirstPointAtOrAfter(g, key) ? k + 1 : vrSchedule_FirstPointAtOrAfter(g, key);
+    }
+    return 0;
+}
+
+/* ---- start-up overlap check ---------------------------------------------------- */
+
+int vrOwner_Overlapping(vrOwner *o, double t, double tol, int (*out)[2], int max)
+{
+    int i, n = 0;
+    sort_owner = o;
+    qsort(o->flagged.v, (size_t)o->flagged.n, sizeof *o->flagged.v, cmp_pairs);
+    for (i = 0; i < o->flagged.n; i++) {
+        vrPair *p = &o->pair[o->flagged.v[i]];
+        vrPose pa, pb;
+        vrContact c;
+        if (!p->scheduled) continue;
+        query(o, p, t, 0, &pa, &pb, &c);
+        if (c.dist < -tol) {
+            if (n < max) { out[n][0] = p->a; out[n][1] = p->b; }
+            n++;
+        }
+    }
+    return n;
+}
+
+/* ---- responses ------------------------------------------------------------------ */
+
+static void impact_body(vrBody *b, double t, vec3 c, vrImpactBody *ib, vrPose *pose)
+{
+    vrBody_Pose(b, t, pose);
+    ib->is_static = b->is_static;
+    ib->mass = b->mass;
+    ib->inertia = vrBody_InertiaWorld(b, pose);
+    ib->inv_inertia = vrBody_InvInertiaWorld(b, pose);
+    ib->p = vec3_sub(c, pose->p);
+    vrBody_Velocity(b, t, &ib->v);
+    ib->w = vrBody_Omega(b, pose);
+}
+
+/* the new state of a body after an impulse: woken, hit, new velocities */
+static int kick(vrUpdate *up, vrBody *b, double t, vec3 v, vec3 w, const vrPose *pose)
+{
+    vrBodyState *st;
+    mat33 I;
+    if (b->is_static) return 0;
+    st = vrUpdate_Body(up, b, t);
+    if (!st) return -1;
+    I = vrBody_InertiaWorld(b, pose);
+    st->v = v;
+    st->L = b->rot == VR_ROT_NONE && vec3_len2(w) == 0 ? vec3_zero() : mat33_mulv(&I, w);
+    st->resting = 0;
+    st->hit = 1;
+    return 0;
+}
+
+static int respond_impulse(vrOwner *o, const vrEvent *ev, vrUpdate *up)
+{
+    vrBody *A = o->body[ev->a], *B = o->body[ev->b];
+    vrImpactBody ia, ib;
+    vrPose pa, pb;
+    vec3 v1, w1, v2, w2;
+    impact_body(A, ev->t, ev->c, &ia, &pa);
+    impact_body(B, ev->t, ev->c, &ib, &pb);
+    if (vrResponder_Solve(o->responder, &ia, &ib, ev->n, ev->e, &v1, &w1, &v2, &w2, NULL) != 0) return -1;
+    if (kick(up, A, ev->t, v1, w1, &pa) != 0 || kick(up, B, ev->t, v2, w2, &pb) != 0) return -1;
+    return 0;
+}
+
+/* interpenetrating bodies are pushed apart along the normal to half the
+ * collision distance, shared by inverse mass */
+static int respond_pushout(vrOwner *o, const vrEvent *ev, vrUpdate *up)
+{
+    vrBody *b[2] = {o->body[ev->a], o->body[ev->b]};
+    double w0 = b[0]->inv_mass, w1 = b[1]->inv_mass, total = ev->depth + 0.5 * o->p.d;
+    double share[2] = {w0 / (w0 + w1), w1 / (w0 + w1)}, sign[2] = {-1, 1};
+    int s;
+    for (s = 0; s < 2; s++) {
+        vrBodyState *st;
+        if (b[s]->is_static) continue;
+        st = vrUpdate_Body(up, b[s], ev->t);
+        if (!st) return -1;
+        st->x = vec3_madd(st->x, sign[s] * share[s] * total, ev->n);
+        st->resting = 0;
+    }
+    return 0;
+}
+
+static int respond_support(vrOwner *o, const vrEvent *ev, vrUpdate *up)
+{
+    vrBody *x = o->body[ev->body], *y = o->body[ev->partner];
+    vrBodyState *st = vrUpdate_Body(up, x, ev->t);
+    int i, k = 0;
+    if (!st) return -1;
+    if (ev->kind == VR_EV_SUPPORT_BEGIN) {
+        vrPose py;
+        vec3 uy;
+        vrBody_Pose(y, ev->t, &py);
+        uy = vrBody_PointVelocity(y, ev->t, &py, ev->c);
+        /* what is left of the normal relative velocity goes (SPEC 3.1) */
+        st->v = vec3_madd(st->v, -vec3_dot(ev->n, vec3_sub(st->v, uy)), ev->n);
+        st->support[st->nsupport].partner = ev->partner;
+        st->support[st->nsupport].n = ev->n;
+        st->nsupport++;
+        return 0;
+    }
+    for (i = 0; i < st->nsupport; i++)
+        if (st->support[i].partner != ev->partner) st->support[k++] = st->support[i];
+    st->nsupport = k;
+    return 0;
+}
+
+int vrOwner_Respond(vrOwner *o, const vrEvent *ev, vrUpdate *up)
+{
+    switch (ev->kind) {
+    case VR_EV_IMPACT:
+    case VR_EV_CONTACT:
+        return respond_impulse(o, ev, up);
+    case VR_EV_PUSHOUT:
+        return respond_pushout(o, ev, up);
+    case VR_EV_SUPPORT_BEGIN:
+    case VR_EV_SUPPORT_END:
+        return respond_support(o, ev, up);
+    default:
+        return 0;
+    }
+}
+
+void vrOwner_Stats(const vrOwner *o, vrOwnerStats *s)
+{
+    s->checks = o->checks;
+    s->heap_pops = o->heap_pops;
+    s->response = vrResponder_Stats(o->responder);
+}

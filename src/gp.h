@@ -1,0 +1,70 @@
+/* gp.h — a pair owner: the thesis's Graphics Processor (3.4.2, 3.5).
+ *
+ * An owner holds some object pairs, the bodies those pairs need, a
+ * collision heap over its pairs, and the walk caches.  It answers the one
+ * question the coordinator asks (ARCHITECTURE "the loop, once"): running
+ * its pairs through the internal steps of a span, what is its first event?
+ * Serial VROC is one owner holding every pair; with workers each forked
+ * process runs the same code on a subset.
+ *
+ * Look-ahead is speculative: an owner checks its pairs past the moment
+ * where some other owner's event will turn out to come first.  Advance(t)
+ * keeps what it learnt up to t and rolls back the rest, so that what every
+ * owner knows at an event time depends on nothing but the event times —
+ * not on how far each owner had looked, nor on how pairs are spread over
+ * owners.  That is what makes runs reproducible bit for bit.
+ */
+#ifndef VROC_GP_H
+#define VROC_GP_H
+
+#include "event.h"
+#include "response.h"
+#include "schedule.h"
+
+#define VR_V_EPS 1e-3          /* m/s: slower approaches inside the envelope need no impulse */
+#define VR_INSTANT_MAX 64      /* responses at one instant before moving on (SPEC 3.1) */
+#define VR_PENETRATION_TOL 1e-9
+
+typedef struct vrParams {
+    double d;            /* collision distance */
+    vrFlight flight;
+    int use_heap;
+} vrParams;
+
+typedef struct vrOwnerStats {
+    long long checks, heap_pops;
+    vrResponseStats response;
+} vrOwnerStats;
+
+typedef struct vrOwner vrOwner;
+
+vrOwner *vrOwner_Create(void);
+void vrOwner_Free(vrOwner *o);
+/* new settings: every pair is re-evaluated at the next span start */
+void vrOwner_SetParams(vrOwner *o, const vrParams *p);
+/* makes body id known to the owner (it is the caller's memory) */
+int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b);
+/* forgets body id and removes its pairs */
+void vrOwner_DropBody(vrOwner *o, int id);
+/* a new pair (a < b, both held); it is evaluated at the next span start */
+int vrOwner_AddPair(vrOwner *o, int a, int b);
+long vrOwner_PairCount(const vrOwner *o);
+/* these bodies were re-anchored: their pairs are re-evaluated at the next
+ * span start, and any pending event of theirs is dropped */
+void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n);
+/* pairs to be evaluated that overlap deeper than tol at time t: fills up to
+ * max (a, b) id pairs, returns how many overlap */
+int vrOwner_Overlapping(vrOwner *o, double t, double tol, int (*out)[2], int max);
+/* the first event in the span the grid covers: 1 (with *ev), 0 for none,
+ * -1 on no memory.  allow_instant = 0 suppresses events at the span start
+ * (after VR_INSTANT_MAX of them at one instant). */
+int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *ev);
+/* every clock moves to t: keep what was learnt up to t, undo the rest */
+void vrOwner_Advance(vrOwner *o, double t);
+/* the new states of the bodies an event changes; -1 if the solve fails */
+int vrOwner_Respond(vrOwner *o, const vrEvent *ev, vrUpdate *up);
+void vrOwner_Stats(const vrOwner *o, vrOwnerStats *s);
+/* the bodies whose pairs this owner holds (copies, thesis 3.5.1) */
+int vrOwner_BodyCount(const vrOwner *o);
+
+#endif

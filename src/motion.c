@@ -1,0 +1,317 @@
+/* motion.c — free flight between events (thesis 3.2.3, SPEC 3.2).
+ *
+ * Position: exact under the body's constant acceleration, the speed capped
+ * at max_linear the way the thesis's eq. (5) splits it (once |v| reaches the
+ * cap, v stays constant).  Rotation: torque-free, the world angular momentum
+ * L constant and omega = R I^-1 R^T L following the orientation.  Isotropic
+ * and symmetric bodies have exact closed forms; an asymmetric body (a box of
+ * three different sides tumbles) uses the symplectic splitting of the free
+ * rigid body Hamiltonian into its three principal rotations (McLachlan 1993;
+ * Dullweber, Leimkuhler, McLachlan 1997), each an exact rotation, so |L| and
+ * L itself are kept to rounding and energy does not drift.  It runs with a
+ * fixed sub-step from the last event, so the pose at t is a pure function of
+ * the anchor and t - t0; a small cache of checkpoints makes successive
+ * queries cost only the steps between them.
+ */
+#include "body.h"
+
+#define ISOTROPY_TOL 1e-12     /* relative difference of moments taken as equal */
+#define CHECKPOINT_EVERY 64
+
+void vrBody_SetMassProperties(vrBody *b, double mass, const mat33 *inertia_unit, double r_in, double r_out)
+{
+    mat33 axes;
+    double span;
+    b->r_in = r_in;
+    b->r_out = r_out;
+    b->is_static = mass < 0;
+    b->mass = fabs(mass);
+    b->inv_mass = b->is_static ? 0.0 : 1.0 / b->mass;
+    b->inertia = mat33_scale(inertia_unit, b->mass);
+    b->inv_inertia = b->is_static ? mat33_zero() : mat33_inverse(&b->inertia);
+    vrMass_Principal(&b->inertia, &b->moments, &axes);
+    b->principal = quat_from_mat33(&axes);
+    b->i_min = b->moments.x;
+    span = b->moments.z * ISOTROPY_TOL;
+    b->sym_axis = -1;
+    if (b->moments.y - b->moments.x <= span && b->moments.z - b->moments.y <= span)
+        b->sym_axis = 3;                /* isotropic */
+    else if (b->moments.y - b->moments.x <= span)
+        b->sym_axis = 2;                /* I1 = I2: the distinct axis is z */
+    else if (b->moments.z - b->moments.y <= span)
+        b->sym_axis = 0;                /* I2 = I3: the distinct axis is x */
+}
+
+/* ---- linear motion ------------------------------------------------------ */
+
+/* time for |v0 + a t| to reach vmax (|v0| <= vmax), thesis eq. (3) solved for t */
+static double cap_time(vec3 v0, vec3 a, double vmax)
+{
+    double A = vec3_dot(a, a), B = 2.0 * vec3_dot(v0, a), C = vec3_dot(v0, v0) - vmax * vmax, D;
+    if (A == 0.0) return INFINITY;
+    if (C > 0.0) C = 0.0;
+    D = sqrt(B * B - 4.0 * A * C);
+    return B > 0.0 ? -2.0 * C / (B + D) : (-B + D) / (2.0 * A);
+}
+
+void vrBody_Position(const vrBody *b, double t, vec3 *x)
+{
+    const vrMotion *m = &b->m;
+    double tau = t - m->t0;
+    if (tau <= m->tcap) {
+        *x = vec3_madd(vec3_madd(m->x0, tau, m->v0), 0.5 * tau * tau, m->a);
+    } else {
+        double c = m->tcap;
+        vec3 xc = vec3_madd(vec3_madd(m->x0, c, m->v0), 0.5 * c * c, m->a);
+        vec3 vc = vec3_madd(m->v0, c, m->a);
+        *x = vec3_madd(xc, tau - c, vc);
+    }
+}
+
+void vrBody_Velocity(const vrBody *b, double t, vec3 *v)
+{
+    double tau = t - b->m.t0;
+    *v = vec3_madd(b->m.v0, tau < b->m.tcap ? tau : b->m.tcap, b->m.a);
+}
+
+/* ---- rotation ------------------------------------------------------------ */
+
+static vec3 omega_at(const vrBody *b, const mat33 *R)
+{
+    vec3 lb = mat33_tmulv(R, b->m.L);
+    vec3 wb = mat33_mulv(&b->inv_inertia, lb);
+    return mat33_mulv(R, wb);
+}
+
+static double moment(const vrBody *b, int k) { return vec3_get(b->moments, k); }
+
+/* one exact sub-flow of H_k = Pi_k^2 / 2 I_k for time s: Pi turns about
+ * e_k by -theta, the principal frame by +theta about its own axis k */
+static void subflow(const vrBody *b, int k, double s, vrRotState *st)
+{
+    double pk = k == 0 ? st->Pi.x : k == 1 ? st->Pi.y : st->Pi.z;
+    double th = pk * s / moment(b, k), c = cos(th), sn = sin(th);
+    double hc = cos(0.5 * th), hs = sin(0.5 * th);
+    vec3 p = st->Pi;
+    quat r = quat_make(hc, k == 0 ? hs : 0, k == 1 ? hs : 0, k == 2 ? hs : 0);
+    if (k == 0) st->Pi = vec3_make(p.x, c * p.y + sn * p.z, -sn * p.y + c * p.z);
+    if (k == 1) st->Pi = vec3_make(c * p.x - sn * p.z, p.y, sn * p.x + c * p.z);
+    if (k == 2) st->Pi = vec3_make(c * p.x + sn * p.y, -sn * p.x + c * p.y, p.z);
+    st->Q = quat_mul(st->Q, r);
+}
+
+/* Strang splitting, symmetric in time (second order, symplectic) */
+static void rot_step(const vrBody *b, double h, vrRotState *st)
+{
+    subflow(b, 0, 0.5 * h, st);
+    subflow(b, 1, 0.5 * h, st);
+    subflow(b, 2, h, st);
+    subflow(b, 1, 0.5 * h, st);
+    subflow(b, 0, 0.5 * h, st);
+}
+
+static void push_checkpoint(vrRotCache *rc, const vrRotState *st)
+{
+    if (rc->nring == VR_ROT_CHECKPOINTS) {
+        int i;
+        for (i = 1; i < VR_ROT_CHECKPOINTS; i++) rc->ring[i - 1] = rc->ring[i];
+        rc->nring--;
+    }
+    rc->ring[rc->nring++] = *st;
+}
+
+/* integrator state at whole step n, from the nearest cached state before it */
+static vrRotState rot_state_at(vrBody *b, long n)
+{
+    vrRotCache *rc = &b->rc;
+    vrRotState st = rc->anchor;
+    int i;
+    if (n >= rc->last.step) {
+        st = rc->last;
+    } else {
+        for (i = rc->nring - 1; i >= 0 && rc->ring[i].step > n; i--)
+            ;
+        if (i >= 0) st = rc->ring[i];
+    }
+    while (st.step < n) {
+        rot_step(b, rc->h, &st);
+        st.step++;
+        if (st.step % CHECKPOINT_EVERY == 0 && (rc->nring == 0 || st.step > rc->ring[rc->nring - 1].step))
+            push_checkpoint(rc, &st);
+    }
+    rc->last = st;
+    return st;
+}
+
+static quat general_orientation(vrBody *b, double tau)
+{
+    long n = (long)floor(tau / b->rc.h);
+    vrRotState st = rot_state_at(b, n);
+    double rest = tau - (double)n * b->rc.h;
+    if (rest > 0) rot_step(b, rest, &st);
+    return quat_mul(quat_normalize(st.Q), quat_conj(b->principal));
+}
+
+/* regular precession of a symmetric top: about L at |L|/I_t, and about the
+ * symmetry axis at Pi_s (1/I_s - 1/I_t) */
+static quat symmetric_orientation(const vrBody *b, double tau)
+{
+    int s = b->sym_axis;
+    double it = moment(b, s == 0 ? 1 : 0), is = moment(b, s);
+    const vrRotState *a = &b->rc.anchor;
+    double ps = s == 0 ? a->Pi.x : s == 1 ? a->Pi.y : a->Pi.z;
+    vec3 axis = vec3_make(s == 0, s == 1, s == 2);
+    quat spin = quat_from_rotvec(vec3_scale(axis, ps * (1.0 / is - 1.0 / it) * tau));
+    quat prec = quat_from_rotvec(vec3_scale(b->m.L, tau / it));
+    quat Q = quat_mul(quat_mul(prec, a->Q), spin);
+    return quat_mul(quat_normalize(Q), quat_conj(b->principal));
+}
+
+static quat orientation_at(vrBody *b, double tau)
+{
+    switch (b->rot) {
+    case VR_ROT_ISOTROPIC:
+        return quat_normalize(quat_mul(quat_from_rotvec(vec3_scale(b->m.L, tau / b->moments.x)), b->m.q0));
+    case VR_ROT_SYMMETRIC:
+        return symmetric_orientation(b, tau);
+    case VR_ROT_GENERAL:
+        return general_orientation(b, tau);
+    default:
+        return b->m.q0;
+    }
+}
+
+void vrBody_Pose(vrBody *b, double t, vrPose *pose)
+{
+    vec3 x;
+    vrBody_Position(b, t, &x);
+    *pose = vrPose_make(x, orientation_at(b, t - b->m.t0));
+}
+
+/* ---- anchoring ------------------------------------------------------------ */
+
+/* the global force less its components along the supporting normals (SPEC
+ * 3.1: a supported body slides, frictionless, at constant distance) */
+static vec3 supported_accel(const vrBody *b, vec3 g)
+{
+    vec3 basis[VR_MAX_SUPPORTS], a = g;
+    int nb = 0, i, j;
+    for (i = 0; i < b->nsupport; i++) {
+        vec3 e = b->support[i].n;
+        double l;
+        for (j = 0; j < nb; j++) e = vec3_madd(e, -vec3_dot(e, basis[j]), basis[j]);
+        l = vec3_len(e);
+        if (l < 1e-9) continue;
+        basis[nb++] = vec3_scale(e, 1.0 / l);
+    }
+    for (j = 0; j < nb; j++) a = vec3_madd(a, -vec3_dot(a, basis[j]), basis[j]);
+    return a;
+}
+
+static void classify_rotation(vrBody *b)
+{
+    if (b->is_static || vec3_len2(b->m.L) == 0.0) b->rot = VR_ROT_NONE;
+    else if (b->sym_axis == 3) b->rot = VR_ROT_ISOTROPIC;
+    else if (b->sym_axis >= 0) b->rot = VR_ROT_SYMMETRIC;
+    else b->rot = VR_ROT_GENERAL;
+}
+
+static void reset_rotation_cache(vrBody *b)
+{
+    vrRotCache *rc = &b->rc;
+    vrRotState a;
+    double w = vrBody_SpinBound(b);
+    a.step = 0;
+    a.Q = quat_mul(b->m.q0, b->principal);
+    a.Pi = quat_unrotate(a.Q, b->m.L);
+    rc->h = w > 0 ? fmin(1e-3, 0.003 / w) : 1e-3;
+    rc->anchor = a;
+    rc->nring = 0;
+    rc->last = a;
+}
+
+void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vrFlight *f)
+{
+    vrMotion *m = &b->m;
+    double s;
+    m->t0 = t;
+    m->x0 = x;
+    m->q0 = quat_normalize(q);
+    if (b->is_static || b->resting) {
+        v = vec3_zero();
+        L = vec3_zero();
+    }
+    s = vec3_len(v);
+    if (s > f->max_linear) v = vec3_scale(v, f->max_linear / s);
+    m->v0 = v;
+    m->L = L;
+    if (!b->is_static && vec3_len2(L) > 0) {
+        mat33 R = mat33_from_quat(m->q0);
+        double w = vec3_len(omega_at(b, &R));
+        if (w > f->max_angular) m->L = vec3_scale(L, f->max_angular / w);
+    }
+    m->a = b->is_static || b->resting ? vec3_zero() : supported_accel(b, f->accel);
+    m->tcap = cap_time(m->v0, m->a, f->max_linear);
+    classify_rotation(b);
+    reset_rotation_cache(b);
+}
+
+void vrBody_Reanchor(vrBody *b, double t, const vrFlight *f)
+{
+    vrPose p;
+    vec3 v;
+    vrBody_Pose(b, t, &p);
+    vrBody_Velocity(b, t, &v);
+    vrBody_Anchor(b, t, p.p, v, p.q, b->m.L, f);
+}
+
+/* ---- derived quantities ---------------------------------------------------- */
+
+vec3 vrBody_Omega(const vrBody *b, const vrPose *pose)
+{
+    if (b->rot == VR_ROT_NONE) return vec3_zero();
+    return omega_at(b, &pose->R);
+}
+
+vec3 vrBody_PointVelocity(const vrBody *b, double t, const vrPose *pose, vec3 p)
+{
+    vec3 v;
+    vrBody_Velocity(b, t, &v);
+    return vec3_add(v, vec3_cross(vrBody_Omega(b, pose), vec3_sub(p, pose->p)));
+}
+
+mat33 vrBody_InvInertiaWorld(const vrBody *b, const vrPose *pose)
+{
+    return mat33_rotate_tensor(&pose->R, &b->inv_inertia);
+}
+
+mat33 vrBody_InertiaWorld(const vrBody *b, const vrPose *pose)
+{
+    return mat33_rotate_tensor(&pose->R, &b->inertia);
+}
+
+double vrBody_SpeedBound(const vrBody *b, double t, double span, double accel, double max_linear)
+{
+    vec3 v;
+    vrBody_Velocity(b, t, &v);
+    return fmin(max_linear, vec3_len(v) + accel * span);
+}
+
+double vrBody_SpinBound(const vrBody *b)
+{
+    return b->is_static || b->i_min <= 0 ? 0.0 : vec3_len(b->m.L) / b->i_min;
+}
+
+int vrBody_IsFree(const vrBody *b) { return !b->is_static && !b->resting; }
+
+/* SPEC 1.3: 1/2 m v^2 + 1/2 omega.L - m g.x */
+double vrBody_Energy(vrBody *b, double t, vec3 g)
+{
+    vrPose p;
+    vec3 v;
+    if (b->is_static) return 0.0;
+    vrBody_Pose(b, t, &p);
+    vrBody_Velocity(b, t, &v);
+    return 0.5 * b->mass * vec3_dot(v, v) + 0.5 * vec3_dot(vrBody_Omega(b, &p), b->m.L)
+         - b->mass * vec3_dot(g, p.p);
+}

@@ -1,0 +1,235 @@
+/* response.c — the 15x15 collision response of thesis 3.2.2 (Hahn 1988;
+ * Moore & Wilhelms 1988), frictionless, with Newton's restitution (SPEC 3.4).
+ *
+ * Unknowns x = (v1', v2', w1', w2', R), R the impulse on body 1:
+ *   rows  0-2   m1 v1' - R         = m1 v1
+ *   rows  3-5   m2 v2' + R         = m2 v2
+ *   rows  6-8   I1 w1' - p1 x R    = I1 w1
+ *   rows  9-11  I2 w2' + p2 x R    = I2 w2
+ *   rows 12-13  t1.R = 0, t2.R = 0 (no friction: R along n)
+ *   row  14     n.u' = -e n.u,  u = (v2 + w2 x p2) - (v1 + w1 x p1)
+ * A static body's rows become v' = v, w' = w.  The pattern is the same for
+ * every contact (explicit zeros where a value vanishes), so KLU analyses it
+ * once.  Pivots: klu_refactor reuses the pivot order of the factorisation
+ * it was given, so results would depend on which contacts were factored
+ * before — and differ between processes.  We keep one canonical
+ * factorisation (of a fixed reference contact, made at creation) for every
+ * refactor, and when a refactor is singular or poor (axis-aligned normals
+ * put exact zeros on its pivots) factor that one contact afresh in a scratch
+ * object: each solve depends on its own matrix only.
+ */
+#include <stdlib.h>
+#include <klu.h>
+#include "response.h"
+
+#define N 15
+#define NNZ 66
+#define RCOND_MIN 1e-12
+#define RESIDUAL_MAX 1e-10
+
+struct vrResponder {
+    klu_common common;
+    klu_symbolic *symbolic;
+    klu_numeric *canonical;
+    int Ap[N + 1], Ai[NNZ];
+    double Ax[NNZ];
+    int at[N][N];            /* at[row][col]: index into Ax, -1 outside the pattern */
+    vrResponseStats stats;
+};
+
+/* the pattern, column by column (CSC) */
+static void build_pattern(vrResponder *r)
+{
+    int col, row, k = 0, i;
+    for (row = 0; row < N; row++)
+        for (col = 0; col < N; col++) r->at[row][col] = -1;
+    for (col = 0; col < N; col++) {
+        int mark[N] = {0};
+        if (col < 6) { mark[col] = 1; mark[14] = 1; }                 /* v1', v2' */
+        else if (col < 12) {                                          /* w1', w2' */
+            int base = col < 9 ? 6 : 9;
+            for (i = 0; i < 3; i++) mark[base + i] = 1;
+            mark[14] = 1;
+        } else {                                                      /* R */
+            int j = col - 12;
+            mark[j] = mark[3 + j] = 1;
+            for (i = 0; i < 3; i++) mark[6 + i] = mark[9 + i] = 1;
+            mark[12] = mark[13] = 1;
+        }
+        r->Ap[col] = k;
+        for (row = 0; row < N; row++)
+            if (mark[row]) { r->Ai[k] = row; r->at[row][col] = k++; }
+    }
+    r->Ap[N] = k;
+}
+
+static void set(vrResponder *r, int row, int col, double v) { r->Ax[r->at[row][col]] = v; }
+
+static void set_block(vrResponder *r, int row, int col, const mat33 *m)
+{
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) set(r, row + i, col + j, m->m[i][j]);
+}
+
+/* fills Ax and the right-hand side for one contact */
+static void assemble(vrResponder *r, const vrImpactBody *b1, const vrImpactBody *b2, vec3 n, double e, double *rhs)
+{
+    const vrImpactBody *b[2] = {b1, b2};
+    vec3 t1 = vec3_orthogonal(n), t2 = vec3_cross(n, t1);
+    vec3 u = vec3_sub(vec3_add(b2->v, vec3_cross(b2->w, b2->p)), vec3_add(b1->v, vec3_cross(b1->w, b1->p)));
+    int s, i;
+    for (i = 0; i < NNZ; i++) r->Ax[i] = 0.0;
+    for (s = 0; s < 2; s++) {
+        const vrImpactBody *x = b[s];
+        double sign = s == 0 ? -1.0 : 1.0;          /* -R on body 1's rows, +R on body 2's */
+        int vr = 3 * s, wr = 6 + 3 * s;
+        mat33 id = mat33_identity(), pc = mat33_cross(x->p);
+        mat33 lever = mat33_scale(&pc, sign);
+        vec3 pn = vec3_cross(x->p, n), Iw;
+        set_block(r, wr, wr, x->is_static ? &id : &x->inertia);
+        for (i = 0; i < 3; i++) {
+            set(r, vr + i, vr + i, x->is_static ? 1.0 : x->mass);
+            set(r, vr + i, 12 + i, x->is_static ? 0.0 : sign);
+        }
+        if (!x->is_static) set_block(r, wr, 12, &lever);
+        /* restitution row: +n.v2' + (p2 x n).w2' - n.v1' - (p1 x n).w1' */
+        for (i = 0; i < 3; i++) {
+            set(r, 14, vr + i, sign * vec3_get(n, i));
+            set(r, 14, wr + i, sign * vec3_get(pn, i));
+        }
+        Iw = x->is_static ? x->w : mat33_mulv(&x->inertia, x->w);
+        rhs[vr] = (x->is_static ? 1.0 : x->mass) * x->v.x;
+        rhs[vr + 1] = (x->is_static ? 1.0 : x->mass) * x->v.y;
+        rhs[vr + 2] = (x->is_static ? 1.0 : x->mass) * x->v.z;
+        rhs[wr] = Iw.x;
+        rhs[wr + 1] = Iw.y;
+        rhs[wr + 2] = Iw.z;
+    }
+    for (i = 0; i < 3; i++) {
+        set(r, 12, 12 + i, vec3_get(t1, i));
+        set(r, 13, 12 + i, vec3_get(t2, i));
+    }
+    rhs[12] = rhs[13] = 0.0;
+    rhs[14] = -e * vec3_dot(n, u);
+}
+
+/* max-norm residual of A x = b relative to the sizes involved */
+static int residual_ok(const vrResponder *r, const double *x, const double *b)
+{
+    double res[N] = {0}, amax = 0, xmax = 0, bmax = 0, rmax = 0;
+    int col, k, i;
+    for (col = 0; col < N; col++)
+        for (k = r->Ap[col]; k < r->Ap[col + 1]; k++) {
+            res[r->Ai[k]] += r->Ax[k] * x[col];
+            if (fabs(r->Ax[k]) > amax) amax = fabs(r->Ax[k]);
+        }
+    for (i = 0; i < N; i++) {
+        if (!isfinite(x[i])) return 0;
+        if (fabs(res[i] - b[i]) > rmax) rmax = fabs(res[i] - b[i]);
+        if (fabs(x[i]) > xmax) xmax = fabs(x[i]);
+        if (fabs(b[i]) > bmax) bmax = fabs(b[i]);
+    }
+    return rmax <= RESIDUAL_MAX * (bmax + amax * xmax);
+}
+
+static int refactor_solve(vrResponder *r, double *x)
+{
+    r->stats.refactors++;
+    if (!klu_refactor(r->Ap, r->Ai, r->Ax, r->symbolic, r->canonical, &r->common)) return -1;
+    if (!klu_rcond(r->symbolic, r->canonical, &r->common) || r->common.rcond < RCOND_MIN) return -1;
+    return klu_solve(r->symbolic, r->canonical, N, 1, x, &r->common) ? 0 : -1;
+}
+
+static int fresh_solve(vrResponder *r, double *x)
+{
+    klu_numeric *num;
+    int ok;
+    r->stats.factors++;
+    num = klu_factor(r->Ap, r->Ai, r->Ax, r->symbolic, &r->common);
+    if (!num) return -1;
+    ok = klu_solve(r->symbolic, num, N, 1, x, &r->common);
+    klu_free_numeric(&num, &r->common);
+    return ok ? 0 : -1;
+}
+
+/* a contact with no special structure, for the canonical pivot order */
+static void reference_contact(vrImpactBody *b1, vrImpactBody *b2, vec3 *n)
+{
+    mat33 I = {{{1.3, 0.2, 0.1}, {0.2, 1.1, 0.3}, {0.1, 0.3, 0.9}}};
+    b1->is_static = b2->is_static = 0;
+    b1->mass = 1.7;
+    b2->mass = 2.3;
+    b1->inertia = b2->inertia = I;
+    b1->inv_inertia = b2->inv_inertia = mat33_inverse(&I);
+    b1->p = vec3_make(0.31, -0.47, 0.52);
+    b2->p = vec3_make(-0.23, 0.41, -0.37);
+    b1->v = b2->v = b1->w = b2->w = vec3_zero();
+    *n = vec3_normalize(vec3_make(0.37, 0.55, 0.75));
+}
+
+vrResponder *vrResponder_Create(void)
+{
+    vrResponder *r = calloc(1, sizeof *r);
+    vrImpactBody b1, b2;
+    vec3 n;
+    double rhs[N];
+    if (!r) return NULL;
+    klu_defaults(&r->common);
+    build_pattern(r);
+    r->symbolic = klu_analyze(N, r->Ap, r->Ai, &r->common);
+    reference_contact(&b1, &b2, &n);
+    assemble(r, &b1, &b2, n, 0.5, rhs);
+    if (r->symbolic) r->canonical = klu_factor(r->Ap, r->Ai, r->Ax, r->symbolic, &r->common);
+    if (!r->canonical) {
+        vrResponder_Free(r);
+        return NULL;
+    }
+    return r;
+}
+
+void vrResponder_Free(vrResponder *r)
+{
+    if (!r) return;
+    if (r->canonical) klu_free_numeric(&r->canonical, &r->common);
+    if (r->symbolic) klu_free_symbolic(&r->symbolic, &r->common);
+    free(r);
+}
+
+int vrResponder_Solve(vrResponder *r, const vrImpactBody *b1, const vrImpactBody *b2, vec3 n, double e,
+                      vec3 *v1, vec3 *w1, vec3 *v2, vec3 *w2, vec3 *impulse)
+{
+    double rhs[N], x[N];
+    int i;
+    assemble(r, b1, b2, n, e, rhs);
+    for (i = 0; i < N; i++) x[i] = rhs[i];
+    r->stats.solves++;
+    if (refactor_solve(r, x) != 0 || !residual_ok(r, x, rhs)) {
+        for (i = 0; i < N; i++) x[i] = rhs[i];
+        if (fresh_solve(r, x) != 0 || !residual_ok(r, x, rhs)) return -1;
+    }
+    *v1 = vec3_make(x[0], x[1], x[2]);
+    *v2 = vec3_make(x[3], x[4], x[5]);
+    *w1 = vec3_make(x[6], x[7], x[8]);
+    *w2 = vec3_make(x[9], x[10], x[11]);
+    if (impulse) *impulse = vec3_make(x[12], x[13], x[14]);
+    return 0;
+}
+
+vrResponseStats vrResponder_Stats(const vrResponder *r) { return r->stats; }
+
+/* SPEC 3.4: j = -(1+e) n.u / (1/m1 + 1/m2 + n.((I1^-1 (p1 x n)) x p1) + n.((I2^-1 (p2 x n)) x p2)) */
+double vrResponse_ClosedForm(const vrImpactBody *b1, const vrImpactBody *b2, vec3 n, double e)
+{
+    const vrImpactBody *b[2] = {b1, b2};
+    vec3 u = vec3_sub(vec3_add(b2->v, vec3_cross(b2->w, b2->p)), vec3_add(b1->v, vec3_cross(b1->w, b1->p)));
+    double k = 0;
+    int s;
+    for (s = 0; s < 2; s++) {
+        vec3 a;
+        if (b[s]->is_static) continue;
+        a = mat33_mulv(&b[s]->inv_inertia, vec3_cross(b[s]->p, n));
+        k += 1.0 / b[s]->mass + vec3_dot(n, vec3_cross(a, b[s]->p));
+    }
+    return -(1.0 + e) * vec3_dot(n, u) / k;
+}

@@ -1,0 +1,29 @@
+/* schedule.h — when to look (thesis 3.2.3 and 3.3.1.1, SPEC 3.2 and 3.3):
+ * the internal-step grid of a span, and a pair's expected earliest event. */
+#ifndef VROC_SCHEDULE_H
+#define VROC_SCHEDULE_H
+
+#include "body.h"
+
+/* grid points t0 + k h, k = 1..n, the last one exactly T */
+typedef struct vrGrid { double t0, T, h; long n; } vrGrid;
+
+static inline double vrGrid_Point(const vrGrid *g, long k)
+{
+    return k >= g->n ? g->T : k <= 0 ? g->t0 : g->t0 + (double)k * g->h;
+}
+
+/* SPEC 3.2: h_max = d / (2 max_i (s_i + w_i R_i)) over the free bodies;
+ * internal_step > 0 forces h */
+void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, double d,
+                     double internal_step, const vrFlight *f, vrGrid *g);
+/* the first k >= 1 whose grid point is at or after time t (n + 1 if none) */
+long vrSchedule_FirstPointAtOrAfter(const vrGrid *g, double t);
+
+/* SPEC 3.3: the earliest time after t at which the pair, dist apart at t,
+ * could come within d: (R - r) dropped for bodies that cannot rotate, the
+ * closing speed bounded piecewise and split at the speed cap (thesis eq. 5).
+ * Returns t when the pair is due now, INFINITY when it can never close. */
+double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, double d, const vrFlight *f);
+
+#endif
