@@ -25,6 +25,7 @@ typedef struct vrPair {
     int scheduled;            /* 0 when both bodies are frozen (static or resting) */
     int flagged;              /* to be evaluated at the next span start */
     double t_check;
+    double key;               /* expected earliest event (in the heap when scheduled and finite) */
     vrWalkCache cache;
 } vrPair;
 
@@ -186,6 +187,7 @@ int vrOwner_AddPair(vrOwner *o, int a, int b)
     p->b = b;
     p->order = ((long long)a << 32) | (long long)b;
     p->t_check = -INFINITY;
+    p->key = -INFINITY;
     if (list_push(&o->body_pairs[a], o->npair) != 0 || list_push(&o->body_pairs[b], o->npair) != 0) return -1;
     o->npair++;
     update_schedule(o, o->npair - 1);
@@ -252,7 +254,16 @@ void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
     o->npending = k;
 }
 
-/* ---- undo log ------------------------------------------------------------- */
+/* ---- keys and the undo log ---------------------------------------------------- */
+
+static void set_key(vrOwner *o, int pi, double key)
+{
+    vrPair *p = &o->pair[pi];
+    p->key = key;
+    if (!o->p.use_heap || !p->scheduled) return;
+    if (key == INFINITY) vrHeap_Remove(&o->heap, pi);
+    else vrHeap_Set(&o->heap, pi, key, p->order);
+}
 
 static void remember(vrOwner *o, int pi, double at)
 {
@@ -263,7 +274,7 @@ static void remember(vrOwner *o, int pi, double at)
     u->at = at;
     u->inside = o->pair[pi].inside;
     u->t_check = o->pair[pi].t_check;
-    u->key = vrHeap_Contains(&o->heap, pi) ? vrHeap_Key(&o->heap, pi) : INFINITY;
+    u->key = o->pair[pi].key;
 }
 
 void vrOwner_Advance(vrOwner *o, double t)
@@ -275,23 +286,13 @@ void vrOwner_Advance(vrOwner *o, double t)
         if (u->at <= t) continue;
         p->inside = u->inside;
         p->t_check = u->t_check;
-        if (!o->p.use_heap || !p->scheduled) continue;
-        if (u->key == INFINITY) vrHeap_Remove(&o->heap, u->pair);
-        else vrHeap_Set(&o->heap, u->pair, u->key, p->order);
+        set_key(o, u->pair, u->key);
     }
     o->nundo = 0;
     if (o->pending_t != t) o->npending = 0;
 }
 
 /* ---- evaluation -------------------------------------------------------------- */
-
-static void set_key(vrOwner *o, int pi, double key)
-{
-    vrPair *p = &o->pair[pi];
-    if (!o->p.use_heap || !p->scheduled) return;
-    if (key == INFINITY) vrHeap_Remove(&o->heap, pi);
-    else vrHeap_Set(&o->heap, pi, key, p->order);
-}
 
 static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPose *pb, vrContact *c)
 {
@@ -563,6 +564,12 @@ static int cmp_order(const void *x, const void *y, const vrOwner *o)
 static const vrOwner *sort_owner; /* qsort has no context argument in C99 */
 static int cmp_pairs(const void *x, const void *y) { return cmp_order(x, y, sort_owner); }
 
+static void sort_pairs(vrOwner *o, vrIntList *l)
+{
+    sort_owner = o;
+    if (l->n > 1) qsort(l->v, (size_t)l->n, sizeof *l->v, cmp_pairs);
+}
+
 static int cmp_events(const void *x, const void *y)
 {
     const vrEvent *a = x, *b = y;
@@ -594,8 +601,7 @@ static void evaluate_into_found(vrOwner *o, int pi, double t, double t_prev, int
 static void span_start(vrOwner *o, double ts, int allow)
 {
     int i;
-    sort_owner = o;
-    qsort(o->flagged.v, (size_t)o->flagged.n, sizeof *o->flagged.v, cmp_pairs);
+    sort_pairs(o, &o->flagged);
     for (i = 0; i < o->flagged.n; i++) {
         int pi = o->flagged.v[i];
         o->pair[pi].flagged = 0;
@@ -622,8 +628,7 @@ static void collect_due(vrOwner *o, double t)
         o->heap_pops++;
         list_push(&o->due, id);
     }
-    sort_owner = o;
-    qsort(o->due.v, (size_t)o->due.n, sizeof *o->due.v, cmp_pairs);
+    sort_pairs(o, &o->due);
 }
 
 int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *ev)
@@ -650,8 +655,7 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
 int vrOwner_Overlapping(vrOwner *o, double t, double tol, int (*out)[2], int max)
 {
     int i, n = 0;
-    sort_owner = o;
-    qsort(o->flagged.v, (size_t)o->flagged.n, sizeof *o->flagged.v, cmp_pairs);
+    sort_pairs(o, &o->flagged);
     for (i = 0; i < o->flagged.n; i++) {
         vrPair *p = &o->pair[o->flagged.v[i]];
         vrPose pa, pb;
@@ -680,14 +684,24 @@ static void impact_body(vrBody *b, double t, vec3 c, vrImpactBody *ib, vrPose *p
     ib->w = vrBody_Omega(b, pose);
 }
 
-/* the new state of a body after an impulse: woken, hit, new velocities */
-static int kick(vrUpdate *up, vrBody *b, double t, vec3 v, vec3 w, const vrPose *pose)
+/* The new state of a body after an impulse: woken, hit, new velocities.
+ * max_angular clamps the spin at every event (SPEC 3.2); where the clamp
+ * bites, the body's velocity along the normal makes up for the change of
+ * its contact point's normal velocity, so that one impulse still settles
+ * the contact (the clamp gives up momentum either way). */
+static int kick(vrOwner *o, vrUpdate *up, vrBody *b, const vrEvent *ev, vec3 v, vec3 w, const vrPose *pose)
 {
     vrBodyState *st;
     mat33 I;
+    double spin = vec3_len(w), cap = o->p.flight.max_angular;
     if (b->is_static) return 0;
-    st = vrUpdate_Body(up, b, t);
+    st = vrUpdate_Body(up, b, ev->t);
     if (!st) return -1;
+    if (spin > cap) {
+        vec3 clamped = vec3_scale(w, cap / spin), p = vec3_sub(ev->c, pose->p);
+        v = vec3_madd(v, -vec3_dot(ev->n, vec3_cross(vec3_sub(clamped, w), p)), ev->n);
+        w = clamped;
+    }
     I = vrBody_InertiaWorld(b, pose);
     st->v = v;
     st->L = b->rot == VR_ROT_NONE && vec3_len2(w) == 0 ? vec3_zero() : mat33_mulv(&I, w);
@@ -705,7 +719,7 @@ static int respond_impulse(vrOwner *o, const vrEvent *ev, vrUpdate *up)
     impact_body(A, ev->t, ev->c, &ia, &pa);
     impact_body(B, ev->t, ev->c, &ib, &pb);
     if (vrResponder_Solve(o->responder, &ia, &ib, ev->n, ev->e, &v1, &w1, &v2, &w2, NULL) != 0) return -1;
-    if (kick(up, A, ev->t, v1, w1, &pa) != 0 || kick(up, B, ev->t, v2, w2, &pb) != 0) return -1;
+    if (kick(o, up, A, ev, v1, w1, &pa) != 0 || kick(o, up, B, ev, v2, w2, &pb) != 0) return -1;
     return 0;
 }
 

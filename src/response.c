@@ -12,11 +12,12 @@
  * every contact (explicit zeros where a value vanishes), so KLU analyses it
  * once.  Pivots: klu_refactor reuses the pivot order of the factorisation
  * it was given, so results would depend on which contacts were factored
- * before — and differ between processes.  We keep one canonical
- * factorisation (of a fixed reference contact, made at creation) for every
- * refactor, and when a refactor is singular or poor (axis-aligned normals
- * put exact zeros on its pivots) factor that one contact afresh in a scratch
- * object: each solve depends on its own matrix only.
+ * before — and differ between processes.  Instead each solve refactors a
+ * canonical factorisation chosen by the matrix's zero pattern (a static
+ * body's identity rows and axis-aligned normals put exact zeros where a
+ * general contact has pivots), made once from a fixed fill of that pattern;
+ * when that refactor is singular or poor, the contact is factored afresh in
+ * a scratch object.  Each solve depends on its own matrix only.
  */
 #include <stdlib.h>
 #include <klu.h>
@@ -27,10 +28,18 @@
 #define RCOND_MIN 1e-12
 #define RESIDUAL_MAX 1e-10
 
+#define PATTERNS 32   /* zero patterns with a canonical factorisation */
+
+typedef struct vrPattern {
+    unsigned long long bits[2];   /* bit k: Ax[k] != 0 */
+    klu_numeric *numeric;
+} vrPattern;
+
 struct vrResponder {
     klu_common common;
     klu_symbolic *symbolic;
-    klu_numeric *canonical;
+    vrPattern pattern[PATTERNS];
+    int npattern;
     int Ap[N + 1], Ai[NNZ];
     double Ax[NNZ];
     int at[N][N];            /* at[row][col]: index into Ax, -1 outside the pattern */
@@ -114,34 +123,94 @@ static void assemble(vrResponder *r, const vrImpactBody *b1, const vrImpactBody 
     rhs[14] = -e * vec3_dot(n, u);
 }
 
+/* res = b - A x */
+static void residual(const vrResponder *r, const double *x, const double *b, double *res)
+{
+    int col, k, i;
+    for (i = 0; i < N; i++) res[i] = b[i];
+    for (col = 0; col < N; col++)
+        for (k = r->Ap[col]; k < r->Ap[col + 1]; k++) res[r->Ai[k]] -= r->Ax[k] * x[col];
+}
+
+/* one step of iterative refinement: the 15x15 system is badly scaled when
+ * masses differ by orders of magnitude, and a step recovers most of it */
+static void refine(vrResponder *r, klu_numeric *num, double *x, const double *b)
+{
+    double d[N];
+    int i;
+    residual(r, x, b, d);
+    if (klu_solve(r->symbolic, num, N, 1, d, &r->common))
+        for (i = 0; i < N; i++) x[i] += d[i];
+}
+
 /* max-norm residual of A x = b relative to the sizes involved */
 static int residual_ok(const vrResponder *r, const double *x, const double *b)
 {
-    double res[N] = {0}, amax = 0, xmax = 0, bmax = 0, rmax = 0;
-    int col, k, i;
-    for (col = 0; col < N; col++)
-        for (k = r->Ap[col]; k < r->Ap[col + 1]; k++) {
-            res[r->Ai[k]] += r->Ax[k] * x[col];
-            if (fabs(r->Ax[k]) > amax) amax = fabs(r->Ax[k]);
-        }
+    double res[N], amax = 0, xmax = 0, bmax = 0, rmax = 0;
+    int k, i;
+    residual(r, x, b, res);
+    for (k = 0; k < NNZ; k++) amax = fmax(amax, fabs(r->Ax[k]));
     for (i = 0; i < N; i++) {
         if (!isfinite(x[i])) return 0;
-        if (fabs(res[i] - b[i]) > rmax) rmax = fabs(res[i] - b[i]);
-        if (fabs(x[i]) > xmax) xmax = fabs(x[i]);
-        if (fabs(b[i]) > bmax) bmax = fabs(b[i]);
+        rmax = fmax(rmax, fabs(res[i]));
+        xmax = fmax(xmax, fabs(x[i]));
+        bmax = fmax(bmax, fabs(b[i]));
     }
     return rmax <= RESIDUAL_MAX * (bmax + amax * xmax);
 }
 
-static int refactor_solve(vrResponder *r, double *x)
+static void pattern_of(const vrResponder *r, unsigned long long bits[2])
 {
-    r->stats.refactors++;
-    if (!klu_refactor(r->Ap, r->Ai, r->Ax, r->symbolic, r->canonical, &r->common)) return -1;
-    if (!klu_rcond(r->symbolic, r->canonical, &r->common) || r->common.rcond < RCOND_MIN) return -1;
-    return klu_solve(r->symbolic, r->canonical, N, 1, x, &r->common) ? 0 : -1;
+    int k;
+    bits[0] = bits[1] = 0;
+    for (k = 0; k < NNZ; k++)
+        if (r->Ax[k] != 0) bits[k / 64] |= 1ULL << (k % 64);
 }
 
-static int fresh_solve(vrResponder *r, double *x)
+/* the canonical factorisation of a zero pattern: the pattern filled with
+ * fixed values of the sizes a contact has (masses and inertias ~1, lever
+ * arms and normal components below), slightly varied to avoid pivot ties */
+static klu_numeric *canonical_for(vrResponder *r, const unsigned long long bits[2])
+{
+    double fill[NNZ];
+    int k, col;
+    for (col = 0; col < N; col++)
+        for (k = r->Ap[col]; k < r->Ap[col + 1]; k++) {
+            int row = r->Ai[k], on = (bits[k / 64] >> (k % 64)) & 1;
+            double size = row == col || (row < 12 && col < 12) ? 1.0 : 0.5;
+            fill[k] = on ? size * (1.0 + 0.01 * ((row * 31 + col * 17) % 13)) : 0.0;
+        }
+    r->stats.factors++;
+    return klu_factor(r->Ap, r->Ai, fill, r->symbolic, &r->common);
+}
+
+static klu_numeric *numeric_for(vrResponder *r)
+{
+    unsigned long long bits[2];
+    int i;
+    pattern_of(r, bits);
+    for (i = 0; i < r->npattern; i++)
+        if (r->pattern[i].bits[0] == bits[0] && r->pattern[i].bits[1] == bits[1]) return r->pattern[i].numeric;
+    if (r->npattern == PATTERNS) return NULL;
+    r->pattern[r->npattern].bits[0] = bits[0];
+    r->pattern[r->npattern].bits[1] = bits[1];
+    r->pattern[r->npattern].numeric = canonical_for(r, bits);
+    return r->pattern[r->npattern++].numeric;
+}
+
+static int refactor_solve(vrResponder *r, double *x, const double *b)
+{
+    klu_numeric *num = numeric_for(r);
+    if (!num) return -1;
+    r->stats.refactors++;
+    if (!klu_refactor(r->Ap, r->Ai, r->Ax, r->symbolic, num, &r->common)) return -1;
+    if (!klu_rcond(r->symbolic, num, &r->common) || r->common.rcond < RCOND_MIN) return -1;
+    if (!klu_solve(r->symbolic, num, N, 1, x, &r->common)) return -1;
+    refine(r, num, x, b);
+    return 0;
+}
+
+static int fresh_solve(vrResponder *r, double *x, const double *b)
 {
     klu_numeric *num;
     int ok;
@@ -149,39 +218,19 @@ static int fresh_solve(vrResponder *r, double *x)
     num = klu_factor(r->Ap, r->Ai, r->Ax, r->symbolic, &r->common);
     if (!num) return -1;
     ok = klu_solve(r->symbolic, num, N, 1, x, &r->common);
+    if (ok) refine(r, num, x, b);
     klu_free_numeric(&num, &r->common);
     return ok ? 0 : -1;
-}
-
-/* a contact with no special structure, for the canonical pivot order */
-static void reference_contact(vrImpactBody *b1, vrImpactBody *b2, vec3 *n)
-{
-    mat33 I = {{{1.3, 0.2, 0.1}, {0.2, 1.1, 0.3}, {0.1, 0.3, 0.9}}};
-    b1->is_static = b2->is_static = 0;
-    b1->mass = 1.7;
-    b2->mass = 2.3;
-    b1->inertia = b2->inertia = I;
-    b1->inv_inertia = b2->inv_inertia = mat33_inverse(&I);
-    b1->p = vec3_make(0.31, -0.47, 0.52);
-    b2->p = vec3_make(-0.23, 0.41, -0.37);
-    b1->v = b2->v = b1->w = b2->w = vec3_zero();
-    *n = vec3_normalize(vec3_make(0.37, 0.55, 0.75));
 }
 
 vrResponder *vrResponder_Create(void)
 {
     vrResponder *r = calloc(1, sizeof *r);
-    vrImpactBody b1, b2;
-    vec3 n;
-    double rhs[N];
     if (!r) return NULL;
     klu_defaults(&r->common);
     build_pattern(r);
     r->symbolic = klu_analyze(N, r->Ap, r->Ai, &r->common);
-    reference_contact(&b1, &b2, &n);
-    assemble(r, &b1, &b2, n, 0.5, rhs);
-    if (r->symbolic) r->canonical = klu_factor(r->Ap, r->Ai, r->Ax, r->symbolic, &r->common);
-    if (!r->canonical) {
+    if (!r->symbolic) {
         vrResponder_Free(r);
         return NULL;
     }
@@ -190,8 +239,10 @@ vrResponder *vrResponder_Create(void)
 
 void vrResponder_Free(vrResponder *r)
 {
+    int i;
     if (!r) return;
-    if (r->canonical) klu_free_numeric(&r->canonical, &r->common);
+    for (i = 0; i < r->npattern; i++)
+        if (r->pattern[i].numeric) klu_free_numeric(&r->pattern[i].numeric, &r->common);
     if (r->symbolic) klu_free_symbolic(&r->symbolic, &r->common);
     free(r);
 }
@@ -204,9 +255,9 @@ int vrResponder_Solve(vrResponder *r, const vrImpactBody *b1, const vrImpactBody
     assemble(r, b1, b2, n, e, rhs);
     for (i = 0; i < N; i++) x[i] = rhs[i];
     r->stats.solves++;
-    if (refactor_solve(r, x) != 0 || !residual_ok(r, x, rhs)) {
+    if (refactor_solve(r, x, rhs) != 0 || !residual_ok(r, x, rhs)) {
         for (i = 0; i < N; i++) x[i] = rhs[i];
-        if (fresh_solve(r, x) != 0 || !residual_ok(r, x, rhs)) return -1;
+        if (fresh_solve(r, x, rhs) != 0 || !residual_ok(r, x, rhs)) return -1;
     }
     *v1 = vec3_make(x[0], x[1], x[2]);
     *v2 = vec3_make(x[3], x[4], x[5]);

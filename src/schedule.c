@@ -1,5 +1,6 @@
 /* schedule.c — the internal-step grid (thesis 3.2.3) and the expected
  * earliest collision time of a pair (thesis 3.3.1.1), SPEC 3.2–3.3. */
+#include <float.h>
 #include "schedule.h"
 
 /* what the key leaves on the table for rounding in distances and poses */
@@ -12,8 +13,13 @@ void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, do
     int i;
     g->t0 = ts;
     g->T = T;
+    if (span <= 0) {          /* an event at the frame end: nothing left to step */
+        g->n = 0;
+        g->h = 0;
+        return;
+    }
     if (internal_step > 0) {
-        g->n = span > 0 ? (long)ceil(span / internal_step) : 1;
+        g->n = (long)ceil(span / internal_step);
         if (g->n < 1) g->n = 1;
         g->h = internal_step;
         return;
@@ -27,9 +33,10 @@ void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, do
         if (reach > fastest) fastest = reach;
     }
     g->n = 1;
-    if (fastest > 0 && span > 0) {
-        double steps = ceil(span * 2.0 * fastest / d);
-        g->n = steps > 1 ? (long)steps : 1;
+    if (fastest > 0) {
+        /* never finer than the clock can tell apart */
+        double steps = ceil(span * 2.0 * fastest / d), finest = span / (8.0 * DBL_EPSILON * fmax(1.0, fabs(T)));
+        g->n = steps > 1 ? (long)fmin(steps, finest) : 1;
     }
     g->h = span / (double)g->n;
 }

@@ -1,0 +1,516 @@
+/* test_dynamics.c — the simulation checked against physics (SPEC 3):
+ * analytic bounces, head-on collisions, conservation laws, no tunneling,
+ * sliding without sinking, rest without jitter, and determinism. */
+#include <stdlib.h>
+#include <string.h>
+#include "test.h"
+#include "vroc.h"
+#include "vec.h"
+
+/* ---- scene helpers -------------------------------------------------------- */
+
+static vrWorld *new_world(double time_step, double d, double g)
+{
+    vrWorld *w = vrWorld_Create();
+    vrSettings s = *vrWorld_Settings(w);
+    s.time_step = time_step;
+    s.collision_dist = d;
+    s.force_mag = g;
+    s.max_linear = 50;
+    s.max_angular = 50;
+    vrWorld_SetSettings(w, &s, NULL, 0);
+    return w;
+}
+
+static void set(vrWorld *w, void (*edit)(vrSettings *))
+{
+    vrSettings s = *vrWorld_Settings(w);
+    edit(&s);
+    vrWorld_SetSettings(w, &s, NULL, 0);
+}
+
+static vrObjectId add(vrWorld *w, const char *name, vrObjectType type, const vrObjectDef *d)
+{
+    vrObjectId id;
+    char err[256];
+    if (vrWorld_CreateObject(w, name, type, &id, err, sizeof err) != 0 || vrWorld_SetObjectDef(w, id, d, err, sizeof err) != 0) {
+        printf("    add %s: %s\n", name, err);
+        return VR_NO_OBJECT;
+    }
+    return id;
+}
+
+static vrObjectId sphere(vrWorld *w, const char *name, double r, vec3 at, vec3 v, double mass, double e)
+{
+    vrObjectDef d = vrObjectDef_Default(VR_SPHERE);
+    d.radius = r;
+    d.translate[0] = at.x; d.translate[1] = at.y; d.translate[2] = at.z;
+    d.linear_vel[0] = v.x; d.linear_vel[1] = v.y; d.linear_vel[2] = v.z;
+    d.mass = mass;
+    d.mass_set = 1;
+    d.elasticity = e;
+    return add(w, name, VR_SPHERE, &d);
+}
+
+static vrObjectId box(vrWorld *w, const char *name, vec3 half, vec3 at, double mass, double e)
+{
+    vrObjectDef d = vrObjectDef_Default(VR_CUBE);
+    d.size[0] = half.x; d.size[1] = half.y; d.size[2] = half.z;
+    d.translate[0] = at.x; d.translate[1] = at.y; d.translate[2] = at.z;
+    d.mass = mass;
+    d.mass_set = 1;
+    d.elasticity = e;
+    return add(w, name, VR_CUBE, &d);
+}
+
+static void edit_def(vrWorld *w, vrObjectId id, void (*f)(vrObjectDef *, const void *), const void *arg)
+{
+    vrObjectDef d;
+    vrWorld_GetObjectDef(w, id, &d);
+    f(&d, arg);
+    vrWorld_SetObjectDef(w, id, &d, NULL, 0);
+}
+
+static void set_rotation(vrObjectDef *d, const void *arg)
+{
+    const double *a = arg;
+    d->rotate_set = 1;
+    d->rotate_axis[0] = a[0]; d->rotate_axis[1] = a[1]; d->rotate_axis[2] = a[2];
+    d->rotate_angle = a[3];
+}
+
+static void set_spin(vrObjectDef *d, const void *arg)
+{
+    const double *a = arg;
+    d->angular_vel[0] = a[0]; d->angular_vel[1] = a[1]; d->angular_vel[2] = a[2];
+}
+
+static vrObjectState state(const vrWorld *w, vrObjectId id)
+{
+    vrObjectState s;
+    memset(&s, 0, sizeof s);
+    vrWorld_GetObjectState(w, id, &s);
+    return s;
+}
+
+static int step(vrWorld *w, long n)
+{
+    char err[512];
+    if (vrWorld_Step(w, n, err, sizeof err) != 0) {
+        printf("    step: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+static vrStats stats(const vrWorld *w)
+{
+    vrStats s;
+    vrWorld_GetStats(w, &s);
+    return s;
+}
+
+static vec3 vpos(const vrObjectState *s) { return vec3_make(s->position[0], s->position[1], s->position[2]); }
+static vec3 vvel(const vrObjectState *s) { return vec3_make(s->linear_vel[0], s->linear_vel[1], s->linear_vel[2]); }
+
+/* ---- bouncing --------------------------------------------------------------- */
+
+/* a table top at z = 0.05 (slab 0.1 thick); a ball of radius 0.1 is in
+ * contact at distance d, its centre at 0.15 + d */
+static vrWorld *drop_scene(double e, double h, double d, double time_step, vrObjectId *ball)
+{
+    vrWorld *w = new_world(time_step, d, 9.8);
+    box(w, "table", vec3_make(2, 2, 0.05), vec3_make(0, 0, 0), -1, 1.0);
+    *ball = sphere(w, "ball", 0.1, vec3_make(0, 0, 0.15 + d + h), vec3_zero(), 1, e);
+    return w;
+}
+
+/* SPEC 3: a ball dropped from h above the contact height bounces back to
+ * h e^2 above it */
+static int test_ball_dropped_from_h_bounces_to_h_e2(void)
+{
+    double h = 1.0, d = 0.01, e = 0.8, apex = -1, contact = 0.15 + d, low = 1e9;
+    vrObjectId ball;
+    vrWorld *w = drop_scene(e, h, d, 0.001, &ball);
+    int i;
+    for (i = 0; i < 1500; i++) {
+        vrObjectState s;
+        ENSURE(step(w, 1) == 0);
+        s = state(w, ball);
+        if (s.position[2] < low) low = s.position[2];
+        if (low < contact + 1e-3 && s.position[2] > apex) apex = s.position[2];
+    }
+    /* it turned around at the envelope, never below it (sampled every 1 ms at ~4.4 m/s) */
+    ENSURE(low >= contact - 1e-12 && low <= contact + sqrt(2 * 9.8 * h) * 0.001);
+    ENSURE_NEAR(apex - contact, h * e * e, 1e-3);
+    ENSURE(stats(w).collisions >= 1);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+/* e = 1 loses nothing: 100 bounces, energy to 1e-6 relative */
+static int test_elastic_ball_keeps_energy_over_100_bounces(void)
+{
+    vrObjectId ball;
+    vrWorld *w = drop_scene(1.0, 1.0, 0.01, 0.1, &ball);
+    double e0;
+    vrStats s;
+    ENSURE(step(w, 0) == 0);
+    e0 = stats(w).energy;
+    ENSURE(step(w, 920) == 0);                      /* ~ 100 bounces of 0.9 s */
+    s = stats(w);
+    printf("    %lld bounces, energy %.17g -> %.17g\n", s.collisions, e0, s.energy);
+    ENSURE(s.collisions >= 100);
+    ENSURE_NEAR(s.energy, e0, 1e-6 * fabs(e0));
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+/* e = 0: it stops on the first impact and comes to rest on the table */
+static int test_inelastic_ball_stops_and_rests(void)
+{
+    vrObjectId ball;
+    vrWorld *w = drop_scene(0.0, 0.5, 0.01, 0.1, &ball);
+    vrObjectState s;
+    ENSURE(step(w, 30) == 0);
+    s = state(w, ball);
+    ENSURE(stats(w).collisions <= 2);
+    ENSURE(s.state == VR_STATE_REST);
+    ENSURE(s.position[2] >= 0.15 && s.position[2] <= 0.15 + 0.01 + 1e-12);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+/* ---- collisions of two bodies --------------------------------------------------- */
+
+static int test_head_on_equal_masses_exchange_velocities(void)
+{
+    vrWorld *w = new_world(0.1, 0.01, 0);
+    vrObjectId a = sphere(w, "a", 0.1, vec3_make(-1, 0, 0), vec3_make(1, 0, 0), 1, 1);
+    vrObjectId b = sphere(w, "b", 0.1, vec3_make(1, 0, 0), vec3_make(-0.5, 0, 0), 1, 1);
+    ENSURE(step(w, 20) == 0);
+    ENSURE_NEAR(state(w, a).linear_vel[0], -0.5, 1e-9);
+    ENSURE_NEAR(state(w, b).linear_vel[0], 1.0, 1e-9);
+    ENSURE(stats(w).collisions == 1);
+    ENSURE(stats(w).klu_solves == stats(w).collisions);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+/* 1D elastic formulas: v1' = (m1-m2)/(m1+m2) v1, v2' = 2 m1/(m1+m2) v1 */
+static int test_head_on_unequal_masses_follow_1d_formulas(void)
+{
+    vrWorld *w = new_world(0.1, 0.01, 0);
+    vrObjectId a = sphere(w, "a", 0.1, vec3_make(-1, 0, 0), vec3_make(2, 0, 0), 1, 1);
+    vrObjectId b = sphere(w, "b", 0.2, vec3_make(1, 0, 0), vec3_zero(), 3, 1);
+    ENSURE(step(w, 20) == 0);
+    ENSURE_NEAR(state(w, a).linear_vel[0], -1.0, 1e-9);
+    ENSURE_NEAR(state(w, b).linear_vel[0], 1.0, 1e-9);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+static int test_restitution_half_against_wall_halves_speed(void)
+{
+    vrWorld *w = new_world(0.1, 0.01, 0);
+    vrObjectId a = sphere(w, "a", 0.1, vec3_make(0, 0, 0), vec3_make(2, 0, 0), 1, 0.5);
+    box(w, "wall", vec3_make(0.1, 1, 1), vec3_make(1, 0, 0), -1, 1);
+    ENSURE(step(w, 10) == 0);
+    ENSURE_NEAR(state(w, a).linear_vel[0], -1.0, 1e-9);
+    ENSURE_NEAR(state(w, a).linear_vel[1], 0.0, 1e-12);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+/* linear momentum, angular momentum about the origin, and energy (e = 1)
+ * of two tumbling bodies before and after an off-centre hit */
+typedef struct { vec3 P, L; double E; } vrMomenta;
+
+static void momenta(const vrWorld *w, const vrObjectId *ids, const double *m, const double *k, int n, vrMomenta *out)
+{
+    int i;
+    out->P = out->L = vec3_zero();
+    out->E = 0;
+    for (i = 0; i < n; i++) {
+        vrObjectState s = state(w, ids[i]);
+        vec3 x = vpos(&s), v = vvel(&s), om = vec3_make(s.angular_vel[0], s.angular_vel[1], s.angular_vel[2]);
+        out->P = vec3_madd(out->P, m[i], v);
+        /* isotropic bodies (spheres, cubes): spin momentum I omega, I = k m */
+        out->L = vec3_add(out->L, vec3_add(vec3_scale(vec3_cross(x, v), m[i]), vec3_scale(om, k[i] * m[i])));
+        out->E += 0.5 * m[i] * vec3_dot(v, v) + 0.5 * k[i] * m[i] * vec3_dot(om, om);
+    }
+}
+
+static int conserve_case(double e)
+{
+    vrWorld *w = new_world(0.05, 0.01, 0);
+    vrObjectId ids[2];
+    double m[2] = {1.3, 2.1}, k[2] = {2.0 * 0.15 * 0.15 / 3.0, 2.0 * 0.2 * 0.2 / 3.0};
+    double rot1[4] = {0.3, 0.9, 0.2, 0.7}, rot2[4] = {-0.5, 0.2, 0.8, 1.1};
+    double spin1[3] = {0.4, -1.1, 0.7}, spin2[3] = {-0.9, 0.3, 0.5};
+    vrMomenta before, after;
+    ids[0] = box(w, "a", vec3_make(0.15, 0.15, 0.15), vec3_make(-1, 0.05, 0.07), m[0], e);
+    ids[1] = box(w, "b", vec3_make(0.2, 0.2, 0.2), vec3_make(1, -0.04, -0.1), m[1], e);
+    edit_def(w, ids[0], set_rotation, rot1);
+    edit_def(w, ids[1], set_rotation, rot2);
+    edit_def(w, ids[0], set_spin, spin1);
+    edit_def(w, ids[1], set_spin, spin2);
+    {
+        vrObjectDef d;
+        vrWorld_GetObjectDef(w, ids[0], &d);
+        d.linear_vel[0] = 1.5;
+        vrWorld_SetObjectDef(w, ids[0], &d, NULL, 0);
+    }
+    ENSURE(step(w, 0) == 0);
+    momenta(w, ids, m, k, 2, &before);
+    ENSURE(step(w, 30) == 0);
+    ENSURE(stats(w).collisions >= 1);
+    momenta(w, ids, m, k, 2, &after);
+    ENSURE(vec3_len(vec3_sub(after.P, before.P)) < 1e-9);
+    ENSURE_MSG(vec3_len(vec3_sub(after.L, before.L)) < 1e-9, "dL %g", vec3_len(vec3_sub(after.L, before.L)));
+    if (e == 1.0) ENSURE_NEAR(after.E, before.E, 1e-9 * before.E);
+    else ENSURE(after.E < before.E);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+static int test_offcentre_cube_hit_conserves_momenta(void)
+{
+    return conserve_case(1.0) || conserve_case(0.4);
+}
+
+/* ---- no tunneling ------------------------------------------------------------------ */
+
+/* a 1 cm ball at 100 m/s never passes a 5 mm plate */
+static int test_fast_small_ball_never_passes_thin_plate(void)
+{
+    vrWorld *w = new_world(0.1, 0.001, 0);
+    vrSettings s = *vrWorld_Settings(w);
+    vrObjectId ball;
+    int i;
+    s.max_linear = 200;
+    vrWorld_SetSettings(w, &s, NULL, 0);
+    ball = sphere(w, "ball", 0.005, vec3_make(-3, 0, 0), vec3_make(100, 0, 0), 0.01, 1);
+    box(w, "plate", vec3_make(0.0025, 1, 1), vec3_make(0, 0, 0), -1, 1);
+    for (i = 0; i < 10; i++) {
+        ENSURE(step(w, 1) == 0);
+        ENSURE(state(w, ball).position[0] < -0.0025 - 0.005);
+    }
+    ENSURE(state(w, ball).linear_vel[0] < 0);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+/* a plank spinning at 50 rad/s drifting into a wall never crosses it */
+static int test_spinning_plank_never_passes_wall(void)
+{
+    vrWorld *w = new_world(0.02, 0.002, 0);
+    vrObjectId plank = box(w, "plank", vec3_make(0.5, 0.05, 0.01), vec3_make(-1, 0, 0), 1, 1);
+    double spin[3] = {0, 0, 50};
+    int i, f;
+    box(w, "wall", vec3_make(0.05, 2, 2), vec3_make(0, 0, 0), -1, 1);
+    edit_def(w, plank, set_spin, spin);
+    {
+        vrObjectDef d;
+        vrWorld_GetObjectDef(w, plank, &d);
+        d.linear_vel[0] = 1.0;
+        vrWorld_SetObjectDef(w, plank, &d, NULL, 0);
+    }
+    for (f = 0; f < 150; f++) {
+        vrObjectState s;
+        quat q;
+        ENSURE(step(w, 1) == 0);
+        s = state(w, plank);
+        q = quat_make(s.orientation[0], s.orientation[1], s.orientation[2], s.orientation[3]);
+        for (i = 0; i < 8; i++) {
+            vec3 c = vec3_make(i & 1 ? 0.5 : -0.5, i & 2 ? 0.05 : -0.05, i & 4 ? 0.01 : -0.01);
+            vec3 p = vec3_add(quat_rotate(q, c), vpos(&s));
+            ENSURE_MSG(p.x < -0.05 + 1e-9, "frame %d corner at x = %g", f, p.x);
+        }
+    }
+    ENSURE(stats(w).collisions >= 1);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+/* ---- contact, support, rest ----------------------------------------------------------- */
+
+static int test_sliding_ball_stays_in_envelope_and_leaves_edge(void)
+{
+    vrWorld *w = new_world(0.05, 0.01, 9.8);
+    vrObjectId ball;
+    double e0, zmin = 1e9, zmax = -1e9;
+    int f, left = 0;
+    box(w, "table", vec3_make(1, 1, 0.05), vec3_make(0, 0, 0), -1, 1);
+    ball = sphere(w, "ball", 0.1, vec3_make(0, 0, 0.155), vec3_make(1, 0, 0), 1, 1);
+    ENSURE(step(w, 0) == 0);
+    e0 = stats(w).energy;
+    for (f = 0; f < 18; f++) {          /* 0.9 s: centre from x = 0 to 0.9, still over the table */
+        vrObjectState s;
+        ENSURE(step(w, 1) == 0);
+        s = state(w, ball);
+        zmin = fmin(zmin, s.position[2]);
+        zmax = fmax(zmax, s.position[2]);
+        ENSURE(stats(w).energy <= e0 + 1e-9 * fabs(e0));
+    }
+    ENSURE(state(w, ball).state == VR_STATE_SUPPORTED);
+    ENSURE(zmin >= 0.15 - 1e-12 && zmax <= 0.16 + 1e-12);   /* no sinking, no hopping */
+    ENSURE_NEAR(state(w, ball).linear_vel[0], 1.0, 1e-3);
+    for (f = 0; f < 20 && !left; f++) {
+        ENSURE(step(w, 1) == 0);
+        left = state(w, ball).position[2] < 0.1;
+    }
+    ENSURE(left);                        /* it fell off the edge */
+    ENSURE(state(w, ball).state == VR_STATE_MOVING);
+    ENSURE(stats(w).energy <= e0 + 1e-6 * fabs(e0));
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+/* a box on an edge with its centre outside the edge tips over and lies flat */
+static int test_box_on_edge_tips_over_and_lies_flat(void)
+{
+    vrWorld *w = new_world(0.05, 0.005, 9.8);
+    double rot[4] = {0, 1, 0, VR_PI / 4 - 0.05};
+    vrObjectId cube;
+    vrObjectState s;
+    quat q;
+    vec3 up;
+    box(w, "table", vec3_make(2, 2, 0.05), vec3_make(0, 0, 0), -1, 1);
+    /* corner-down height of a cube of half 0.1 turned ~45 deg: centre at 0.1 sqrt(2) cos(0.05) */
+    cube = box(w, "cube", vec3_make(0.1, 0.1, 0.1), vec3_make(0, 0, 0.05 + 0.1 * sqrt(2.0) * cos(0.05) + 0.002), 1, 0.2);
+    edit_def(w, cube, set_rotation, rot);
+    ENSURE(step(w, 80) == 0);
+    s = state(w, cube);
+    q = quat_make(s.orientation[0], s.orientation[1], s.orientation[2], s.orientation[3]);
+    up = quat_rotate(q, vec3_make(0, 0, 1));
+    ENSURE_MSG(fabs(fabs(up.z) - 1) < 1e-3 || fabs(up.x) > 1 - 1e-3 || fabs(up.y) > 1 - 1e-3, "up %g %g %g", up.x, up.y, up.z);
+    ENSURE_MSG(s.position[2] > 0.15 - 1e-9 && s.position[2] < 0.15 + 0.005 + 1e-6, "z %g", s.position[2]);
+    ENSURE(s.state == VR_STATE_REST || s.state == VR_STATE_SUPPORTED);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+/* three balls and a box dropped on a table come to rest on it, not in it,
+ * and then do not move a bit */
+static int test_balls_and_box_come_to_rest_without_jitter(void)
+{
+    vrWorld *w = new_world(0.05, 0.01, 9.8);
+    vrObjectId ids[4];
+    vrObjectState frozen[4];
+    int i, f;
+    box(w, "table", vec3_make(2, 2, 0.05), vec3_make(0, 0, 0), -1, 1);
+    /* apart: frictionless bodies that knock each other slide off the table */
+    ids[0] = sphere(w, "b1", 0.1, vec3_make(-1, -1, 0.6), vec3_zero(), 1, 0.7);
+    ids[1] = sphere(w, "b2", 0.15, vec3_make(1, -1, 0.9), vec3_zero(), 1, 0.5);
+    ids[2] = sphere(w, "b3", 0.05, vec3_make(-1, 1, 0.4), vec3_zero(), 1, 0.9);
+    ids[3] = box(w, "bx", vec3_make(0.2, 0.1, 0.05), vec3_make(1, 1, 0.7), 1, 0.3);
+    for (f = 0; f < 400 && !vrWorld_AllAtRest(w); f++) ENSURE(step(w, 1) == 0);
+    ENSURE_MSG(vrWorld_AllAtRest(w), "not at rest after %d frames", f);
+    printf("    at rest after %d frames\n", f);
+    for (i = 0; i < 4; i++) frozen[i] = state(w, ids[i]);
+    ENSURE(frozen[0].position[2] >= 0.15 - 1e-12 && frozen[0].position[2] <= 0.16 + 1e-12);
+    ENSURE(frozen[1].position[2] >= 0.2 - 1e-12 && frozen[1].position[2] <= 0.21 + 1e-12);
+    ENSURE(frozen[2].position[2] >= 0.1 - 1e-12 && frozen[2].position[2] <= 0.11 + 1e-12);
+    ENSURE(frozen[3].position[2] >= 0.1 - 1e-12 && frozen[3].position[2] <= 0.11 + 1e-12);
+    ENSURE(step(w, 20) == 0);
+    for (i = 0; i < 4; i++) {
+        vrObjectState s = state(w, ids[i]);
+        ENSURE(memcmp(s.position, frozen[i].position, sizeof s.position) == 0);
+        ENSURE(memcmp(s.orientation, frozen[i].orientation, sizeof s.orientation) == 0);
+    }
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+/* ---- determinism ------------------------------------------------------------------------- */
+
+static void room_scene(vrSettings *s)
+{
+    s->room = 4;
+    s->seed = 7;
+    s->collision_dist = 0.01;
+    s->time_step = 0.05;
+    s->force_mag = 9.8;
+    s->max_linear = 16;
+    s->max_angular = 100;
+}
+static void heap_off(vrSettings *s) { s->heap = 0; }
+
+static char *dump_of(vrWorld *w)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    vrWorld_WriteDump(w, f);
+    fclose(f);
+    return buf;
+}
+
+static vrWorld *random_room(int heap)
+{
+    vrWorld *w = vrWorld_Create();
+    set(w, room_scene);
+    if (!heap) set(w, heap_off);
+    vrWorld_AddRandom(w, 30, NULL, 0);
+    return w;
+}
+
+/* heap on and heap off give the same bits; so do two runs */
+static int test_heap_on_off_and_reruns_are_bit_identical(void)
+{
+    vrWorld *a = random_room(1), *b = random_room(0), *c = random_room(1);
+    char *da, *db, *dc;
+    vrStats sa, sb;
+    int same;
+    ENSURE(step(a, 60) == 0 && step(b, 60) == 0 && step(c, 60) == 0);
+    da = dump_of(a);
+    db = dump_of(b);
+    dc = dump_of(c);
+    sa = stats(a);
+    sb = stats(b);
+    printf("    heap on: %lld checks, heap off: %lld checks, %lld collisions\n", sa.checks, sb.checks, sa.collisions);
+    same = strcmp(da, db) == 0 && strcmp(da, dc) == 0;
+    if (!same) printf("%s---\n%s", da, db);
+    free(da); free(db); free(dc);
+    ENSURE(same);
+    ENSURE(sa.collisions == sb.collisions && sa.collisions > 10);
+    ENSURE(sa.checks < sb.checks);
+    vrWorld_Destroy(a); vrWorld_Destroy(b); vrWorld_Destroy(c);
+    return 0;
+}
+
+/* objects overlapping at start are refused, named by pair */
+static int test_interpenetration_at_start_is_refused(void)
+{
+    vrWorld *w = new_world(0.1, 0.01, 0);
+    char err[512];
+    sphere(w, "p", 0.5, vec3_make(0, 0, 0), vec3_zero(), 1, 1);
+    sphere(w, "q", 0.5, vec3_make(0.9, 0, 0), vec3_zero(), 1, 1);
+    sphere(w, "r", 0.5, vec3_make(5, 0, 0), vec3_zero(), 1, 1);
+    ENSURE(vrWorld_Start(w, err, sizeof err) != 0);
+    ENSURE(strstr(err, "p and q") != NULL);
+    ENSURE(strstr(err, "r") == NULL || strstr(err, " r") == NULL);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    test_init(argc, argv);
+    RUN_TEST(test_ball_dropped_from_h_bounces_to_h_e2);
+    RUN_TEST(test_elastic_ball_keeps_energy_over_100_bounces);
+    RUN_TEST(test_inelastic_ball_stops_and_rests);
+    RUN_TEST(test_head_on_equal_masses_exchange_velocities);
+    RUN_TEST(test_head_on_unequal_masses_follow_1d_formulas);
+    RUN_TEST(test_restitution_half_against_wall_halves_speed);
+    RUN_TEST(test_offcentre_cube_hit_conserves_momenta);
+    RUN_TEST(test_fast_small_ball_never_passes_thin_plate);
+    RUN_TEST(test_spinning_plank_never_passes_wall);
+    RUN_TEST(test_sliding_ball_stays_in_envelope_and_leaves_edge);
+    RUN_TEST(test_box_on_edge_tips_over_and_lies_flat);
+    RUN_TEST(test_balls_and_box_come_to_rest_without_jitter);
+    RUN_TEST(test_heap_on_off_and_reruns_are_bit_identical);
+    RUN_TEST(test_interpenetration_at_start_is_refused);
+    return test_summary();
+}

@@ -1,0 +1,191 @@
+/* test_response.c — the 15x15 KLU response (SPEC 3.4) against the
+ * closed-form impulse, on random contacts and on the axis-aligned ones that
+ * break a reused pivot order. */
+#include "test.h"
+#include "response.h"
+
+static unsigned long long rng = 12345;
+static double uni(void)
+{
+    rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(rng >> 11) / 9007199254740992.0;
+}
+static double sym(double r) { return (2 * uni() - 1) * r; }
+static vec3 rvec(double r) { return vec3_make(sym(r), sym(r), sym(r)); }
+
+/* a random rigid body: mass, SPD inertia R D R^T, lever arm, velocities */
+static void random_body(vrImpactBody *b, int is_static)
+{
+    quat q = quat_normalize(quat_make(sym(1), sym(1), sym(1), sym(1)));
+    mat33 R = mat33_from_quat(q), D = mat33_diag(0.1 + uni(), 0.1 + uni(), 0.1 + uni());
+    b->is_static = is_static;
+    b->mass = 0.2 + 3 * uni();
+    b->inertia = mat33_rotate_tensor(&R, &D);
+    b->inv_inertia = mat33_inverse(&b->inertia);
+    b->p = rvec(0.5);
+    b->v = is_static ? vec3_zero() : rvec(3);
+    b->w = is_static ? vec3_zero() : rvec(2);
+}
+
+/* the response's velocities equal those of R = -j n with the closed-form j */
+static int check_against_closed_form(vrResponder *r, const vrImpactBody *b1, const vrImpactBody *b2, vec3 n, double e)
+{
+    vec3 v1, w1, v2, w2, R;
+    double j = vrResponse_ClosedForm(b1, b2, n, e), scale = 1 + fabs(j);
+    vec3 Rj = vec3_scale(n, -j);
+    ENSURE(vrResponder_Solve(r, b1, b2, n, e, &v1, &w1, &v2, &w2, &R) == 0);
+    ENSURE_NEAR(R.x, Rj.x, 1e-12 * scale);
+    ENSURE_NEAR(R.y, Rj.y, 1e-12 * scale);
+    ENSURE_NEAR(R.z, Rj.z, 1e-12 * scale);
+    if (!b1->is_static) {
+        vec3 dv = vec3_sub(v1, vec3_madd(b1->v, 1.0 / b1->mass, Rj));
+        ENSURE(vec3_len(dv) < 1e-12 * scale);
+    } else {
+        ENSURE(vec3_len(vec3_sub(v1, b1->v)) == 0 && vec3_len(vec3_sub(w1, b1->w)) == 0);
+    }
+    if (!b2->is_static) {
+        vec3 dw = vec3_sub(w2, vec3_add(b2->w, mat33_mulv(&b2->inv_inertia, vec3_cross(b2->p, vec3_neg(Rj)))));
+        ENSURE(vec3_len(dw) < 1e-12 * scale * 10);
+    }
+    return 0;
+}
+
+static int test_klu_matches_closed_form_on_random_contacts(void)
+{
+    vrResponder *r = vrResponder_Create();
+    int i;
+    ENSURE(r);
+    for (i = 0; i < 2000; i++) {
+        vrImpactBody b1, b2;
+        vec3 n = vec3_normalize(rvec(1));
+        random_body(&b1, i % 7 == 3);
+        random_body(&b2, i % 5 == 1 && i % 7 != 3);
+        if (check_against_closed_form(r, &b1, &b2, n, uni())) { vrResponder_Free(r); return 1; }
+    }
+    ENSURE(vrResponder_Stats(r).solves == 2000);
+    vrResponder_Free(r);
+    return 0;
+}
+
+/* axis-aligned normals and lever arms put exact zeros on pivots; the solve
+ * must notice (singular or poor refactor) and factor afresh */
+static int test_axis_aligned_contacts_refactor_from_scratch(void)
+{
+    vrResponder *r = vrResponder_Create();
+    vrImpactBody b1, b2;
+    vrResponseStats s;
+    int axis;
+    ENSURE(r);
+    for (axis = 0; axis < 3; axis++) {
+        vec3 n = vec3_make(axis == 0, axis == 1, axis == 2);
+        b1.is_static = 0; b2.is_static = 1;
+        b1.mass = 1; b2.mass = 1;
+        b1.inertia = b2.inertia = mat33_diag(0.4, 0.4, 0.4);
+        b1.inv_inertia = b2.inv_inertia = mat33_diag(2.5, 2.5, 2.5);
+        b1.p = vec3_scale(n, -0.1);   /* a sphere resting on a plane: p parallel to n */
+        b2.p = vec3_scale(n, 0.5);
+        b1.v = vec3_scale(n, 2.0);
+        b1.w = b2.v = b2.w = vec3_zero();
+        if (check_against_closed_form(r, &b1, &b2, n, 0.8)) { vrResponder_Free(r); return 1; }
+    }
+    s = vrResponder_Stats(r);
+    ENSURE(s.solves == 3);
+    ENSURE(s.refactors == 3);
+    ENSURE(s.factors == 3);        /* one canonical factorisation per zero pattern */
+    vrResponder_Free(r);
+    return 0;
+}
+
+/* masses and inertias over 12 orders of magnitude: where a canonical pivot
+ * order goes bad the solve must notice and factor afresh, and stay right */
+static int test_extreme_scales_stay_accurate(void)
+{
+    vrResponder *r = vrResponder_Create();
+    vrResponseStats s;
+    int i;
+    ENSURE(r);
+    for (i = 0; i < 500; i++) {
+        vrImpactBody b1, b2;
+        double k1 = pow(10, -6 + 12 * uni()), k2 = pow(10, -6 + 12 * uni());
+        vec3 n = vec3_normalize(rvec(1));
+        random_body(&b1, 0);
+        random_body(&b2, 0);
+        b1.mass *= k1;
+        b1.inertia = mat33_scale(&b1.inertia, k1 * pow(10, -3 + 6 * uni()));
+        b1.inv_inertia = mat33_inverse(&b1.inertia);
+        b2.mass *= k2;
+        b2.inertia = mat33_scale(&b2.inertia, k2);
+        b2.inv_inertia = mat33_inverse(&b2.inertia);
+        {
+            vec3 v1, w1, v2, w2, R;
+            double j = vrResponse_ClosedForm(&b1, &b2, n, 0.5);
+            ENSURE(vrResponder_Solve(r, &b1, &b2, n, 0.5, &v1, &w1, &v2, &w2, &R) == 0);
+            ENSURE_MSG(vec3_len(vec3_add(R, vec3_scale(n, j))) <= 1e-9 * fabs(j), "case %d: %.17g vs %.17g m %g %g rel %g", i, vec3_dot(R, n), -j, b1.mass, b2.mass, vec3_len(vec3_add(R, vec3_scale(n, j)))/fabs(j));
+        }
+    }
+    s = vrResponder_Stats(r);
+    printf("    %lld solves, %lld refactors, %lld factorisations\n", s.solves, s.refactors, s.factors);
+    vrResponder_Free(r);
+    return 0;
+}
+
+/* a ball hitting a wall head-on with e: its normal speed becomes e times */
+static int test_restitution_scales_normal_speed(void)
+{
+    vrResponder *r = vrResponder_Create();
+    vrImpactBody ball, wall;
+    vec3 v1, w1, v2, w2;
+    vec3 n = vec3_make(1, 0, 0);
+    ENSURE(r);
+    ball.is_static = 0; wall.is_static = 1;
+    ball.mass = 2; wall.mass = 1;
+    ball.inertia = mat33_diag(0.08, 0.08, 0.08);
+    ball.inv_inertia = mat33_inverse(&ball.inertia);
+    wall.inertia = wall.inv_inertia = mat33_identity();
+    ball.p = vec3_make(0.5, 0, 0);
+    wall.p = vec3_make(-1, 0, 0);
+    ball.v = vec3_make(3, 1, 0);
+    ball.w = wall.v = wall.w = vec3_zero();
+    ENSURE(vrResponder_Solve(r, &ball, &wall, n, 0.5, &v1, &w1, &v2, &w2, NULL) == 0);
+    ENSURE_NEAR(v1.x, -1.5, 1e-14);
+    ENSURE_NEAR(v1.y, 1, 1e-14);        /* frictionless: tangential speed kept */
+    ENSURE_NEAR(vec3_len(w1), 0, 1e-14);
+    vrResponder_Free(r);
+    return 0;
+}
+
+/* the same contact gives the same bits whatever was solved before (the
+ * pivot order must not carry history between processes) */
+static int test_solution_independent_of_history(void)
+{
+    vrResponder *a = vrResponder_Create(), *b = vrResponder_Create();
+    vrImpactBody b1, b2, c1, c2;
+    vec3 n = vec3_normalize(vec3_make(0.2, -0.7, 0.4)), va, wa, vb, wb, x, y;
+    int i;
+    ENSURE(a && b);
+    random_body(&b1, 0);
+    random_body(&b2, 0);
+    for (i = 0; i < 50; i++) {          /* a history for a only, incl. axis-aligned ones */
+        random_body(&c1, 0);
+        random_body(&c2, i % 3 == 0);
+        if (i % 4 == 0) { c1.p = vec3_make(0, 0, -0.2); c2.p = vec3_make(0, 0, 0.2); }
+        vrResponder_Solve(a, &c1, &c2, i % 4 == 0 ? vec3_make(0, 0, 1) : vec3_normalize(rvec(1)), 0.5, &va, &wa, &vb, &wb, NULL);
+    }
+    ENSURE(vrResponder_Solve(a, &b1, &b2, n, 0.7, &va, &wa, &x, &y, NULL) == 0);
+    ENSURE(vrResponder_Solve(b, &b1, &b2, n, 0.7, &vb, &wb, &x, &y, NULL) == 0);
+    ENSURE(va.x == vb.x && va.y == vb.y && va.z == vb.z && wa.x == wb.x && wa.y == wb.y && wa.z == wb.z);
+    vrResponder_Free(a);
+    vrResponder_Free(b);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    test_init(argc, argv);
+    RUN_TEST(test_klu_matches_closed_form_on_random_contacts);
+    RUN_TEST(test_axis_aligned_contacts_refactor_from_scratch);
+    RUN_TEST(test_extreme_scales_stay_accurate);
+    RUN_TEST(test_restitution_scales_normal_speed);
+    RUN_TEST(test_solution_independent_of_history);
+    return test_summary();
+}
