@@ -35,6 +35,7 @@ BENCH_SRC  := $(wildcard tests/bench_*.c)
 PRODUCTS = libvroc.a vroc vroc-gp vroc-render.so
 
 .PHONY: all deps check check-asan demo bench install clean
+.SECONDARY: $(LCM_GEN)
 .DELETE_ON_ERROR:
 
 all: $(PRODUCTS)
@@ -64,7 +65,7 @@ build/$(1)/%.o: %.c $$(LCM_GEN) | deps
 
 build/$(1)/gen/%.o: build/gen/%.c
 	@mkdir -p $$(@D)
-	$$(CC) $$(WARN) -Wno-pedantic -Wno-format $$(DEFS) -Ibuild/gen $$($(1)_CFLAGS) -c $$< -o $$@
+	$$(CC) $$(WARN) -Wno-pedantic -Wno-format -Wno-unused-parameter $$(DEFS) -Ibuild/gen $$($(1)_CFLAGS) -c $$< -o $$@
 
 build/$(1)/libvroc.a: $$($(1)_OBJ)
 	rm -f $$@

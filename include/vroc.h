@@ -206,6 +206,12 @@ int vrDisplay_WriteFrames(const vrDisplay *d, const char *dir, long frame, char 
 const unsigned char *vrDisplay_Pixels(const vrDisplay *d, int eye, int *width, int *height);
 const char *vrDisplay_RendererName(const vrDisplay *d);
 
+/* ---- workers (SPEC 5) ---------------------------------------------------- */
+/* The loop of a worker process (`vroc-gp URL`): announces itself on the LCM
+ * URL, serves one SGP run after another, returns when told to shut down.
+ * -1 with a message when the URL cannot be opened. */
+int vrWorker_Run(const char *url, char *err, size_t errlen);
+
 #ifdef __cplusplus
 }
 #endif

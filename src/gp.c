@@ -59,6 +59,8 @@ struct vrOwner {
     int nfound, foundcap;
     vrResponder *responder;
     long long checks, heap_pops;
+    void (*progress)(void *ctx);
+    void *progress_ctx;
 };
 
 /* ---- small containers ------------------------------------------------------ */
@@ -177,7 +179,14 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
 
 int vrOwner_BodyCount(const vrOwner *o) { return o->nheld; }
 
-int vrOwner_AddPair(vrOwner *o, int a, int b)
+static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPose *pb, vrContact *c);
+static void set_key(vrOwner *o, int pi, double key);
+
+/* A pair's state at a frame boundary is a pure function of the poses: every
+ * pair is evaluated at the last grid point of a frame (or, with the heap,
+ * provably outside there), so inside = distance <= d at that time.  A
+ * flagged pair is instead evaluated afresh at the next span start. */
+int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
 {
     vrPair *p;
     if (grow((void **)&o->pair, &o->paircap, o->npair + 1, sizeof *o->pair) != 0) return -1;
@@ -191,9 +200,20 @@ int vrOwner_AddPair(vrOwner *o, int a, int b)
     if (list_push(&o->body_pairs[a], o->npair) != 0 || list_push(&o->body_pairs[b], o->npair) != 0) return -1;
     o->npair++;
     update_schedule(o, o->npair - 1);
-    flag(o, o->npair - 1);
+    if (flagged) {
+        flag(o, o->npair - 1);
+    } else if (p->scheduled) {
+        vrPose pa, pb;
+        vrContact c;
+        query(o, p, t, 0, &pa, &pb, &c);
+        p->inside = c.dist <= o->p.d;
+        p->t_check = t;
+        set_key(o, o->npair - 1, p->inside ? t : vrSchedule_Key(o->body[a], o->body[b], t, c.dist, o->p.d, &o->p.flight));
+    }
     return 0;
 }
+
+int vrOwner_AddPair(vrOwner *o, int a, int b) { return vrOwner_AddPairAt(o, a, b, 0, 1); }
 
 long vrOwner_PairCount(const vrOwner *o) { return o->npair; }
 
@@ -589,10 +609,17 @@ static int take_first(vrOwner *o, double at, vrEvent *ev)
     return 1;
 }
 
+void vrOwner_SetProgress(vrOwner *o, void (*fn)(void *ctx), void *ctx)
+{
+    o->progress = fn;
+    o->progress_ctx = ctx;
+}
+
 static void evaluate_into_found(vrOwner *o, int pi, double t, double t_prev, int keep)
 {
     vrEvent ev;
     if (!o->pair[pi].scheduled) return;
+    if (o->progress && (o->checks & 255) == 0) o->progress(o->progress_ctx);
     if (evaluate(o, pi, t, t_prev, &ev) && keep) push_event(&o->found, &o->nfound, &o->foundcap, &ev);
 }
 

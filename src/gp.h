@@ -24,6 +24,7 @@
 #define VR_V_EPS 1e-3          /* m/s: slower approaches inside the envelope need no impulse */
 #define VR_INSTANT_MAX 64      /* responses at one instant before moving on (SPEC 3.1) */
 #define VR_PENETRATION_TOL 1e-9
+#define VR_START_OVERLAP 1e-6  /* m: deeper overlaps refuse to start (SPEC 1.4) */
 
 typedef struct vrParams {
     double d;            /* collision distance */
@@ -48,6 +49,9 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b);
 void vrOwner_DropBody(vrOwner *o, int id);
 /* a new pair (a < b, both held); it is evaluated at the next span start */
 int vrOwner_AddPair(vrOwner *o, int a, int b);
+/* a pair joining at a frame boundary t: settled from the poses at t (inside
+ * when within d), or flagged for evaluation at the next span start */
+int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged);
 long vrOwner_PairCount(const vrOwner *o);
 /* these bodies were re-anchored: their pairs are re-evaluated at the next
  * span start, and any pending event of theirs is dropped */
@@ -64,6 +68,9 @@ void vrOwner_Advance(vrOwner *o, double t);
 /* the new states of the bodies an event changes; -1 if the solve fails */
 int vrOwner_Respond(vrOwner *o, const vrEvent *ev, vrUpdate *up);
 void vrOwner_Stats(const vrOwner *o, vrOwnerStats *s);
+/* fn(ctx) is called every few hundred pair evaluations during a look-ahead
+ * (a worker sends heartbeats from it while it cannot answer) */
+void vrOwner_SetProgress(vrOwner *o, void (*fn)(void *ctx), void *ctx);
 /* the bodies whose pairs this owner holds (copies, thesis 3.5.1) */
 int vrOwner_BodyCount(const vrOwner *o);
 

@@ -184,18 +184,25 @@ static klu_numeric *canonical_for(vrResponder *r, const unsigned long long bits[
     return klu_factor(r->Ap, r->Ai, fill, r->symbolic, &r->common);
 }
 
+/* The canonical factorisation of this matrix's pattern.  The cache only
+ * saves work: a pattern's factorisation is the same whenever it is made,
+ * so a full cache evicts its oldest entry (what a solve gives must not
+ * depend on which contacts this process saw before). */
 static klu_numeric *numeric_for(vrResponder *r)
 {
     unsigned long long bits[2];
+    vrPattern *slot;
     int i;
     pattern_of(r, bits);
-    for (i = 0; i < r->npattern; i++)
+    for (i = 0; i < r->npattern && i < PATTERNS; i++)
         if (r->pattern[i].bits[0] == bits[0] && r->pattern[i].bits[1] == bits[1]) return r->pattern[i].numeric;
-    if (r->npattern == PATTERNS) return NULL;
-    r->pattern[r->npattern].bits[0] = bits[0];
-    r->pattern[r->npattern].bits[1] = bits[1];
-    r->pattern[r->npattern].numeric = canonical_for(r, bits);
-    return r->pattern[r->npattern++].numeric;
+    slot = &r->pattern[r->npattern % PATTERNS];
+    if (r->npattern >= PATTERNS) klu_free_numeric(&slot->numeric, &r->common);
+    r->npattern++;
+    slot->bits[0] = bits[0];
+    slot->bits[1] = bits[1];
+    slot->numeric = canonical_for(r, bits);
+    return slot->numeric;
 }
 
 static int refactor_solve(vrResponder *r, double *x, const double *b)
@@ -241,7 +248,7 @@ void vrResponder_Free(vrResponder *r)
 {
     int i;
     if (!r) return;
-    for (i = 0; i < r->npattern; i++)
+    for (i = 0; i < r->npattern && i < PATTERNS; i++)
         if (r->pattern[i].numeric) klu_free_numeric(&r->pattern[i].numeric, &r->common);
     if (r->symbolic) klu_free_symbolic(&r->symbolic, &r->common);
     free(r);

@@ -10,9 +10,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 #include "world.h"
 
-#define START_OVERLAP_TOL 1e-6   /* m: deeper overlaps refuse to start (SPEC 1.4) */
 #define MAX_REPORTED_OVERLAPS 8
 
 /* ---- defaults --------------------------------------------------------------------- */
@@ -147,6 +147,7 @@ vrWorld *vrWorld_Create(void)
     if (!w) return NULL;
     w->s = vrSettings_Default();
     vrUpdate_Init(&w->update);
+    vrUpdate_Init(&w->pending);
     vrRandom_Seed(w);
     return w;
 }
@@ -156,6 +157,7 @@ static void free_object(vrObject *o)
     if (!o) return;
     vrPolyhedron_Free(o->poly);
     vrPolyhedron_Free(o->off);
+    free(o->off_text);
     free(o->draw_verts);
     free(o->draw_normals);
     free(o->draw_face_start);
@@ -172,16 +174,20 @@ static void clear_objects(vrWorld *w)
     vrOwner_Free(w->owner);
     w->owner = NULL;
     w->started = 0;
+    w->pending.n = 0;
+    w->structure++;
 }
 
 void vrWorld_Destroy(vrWorld *w)
 {
     if (!w) return;
     clear_objects(w);
+    vrSgp_Free(w->sgp);
     free(w->obj);
     free(w->dyn);
     free(w->changed);
     vrUpdate_Free(&w->update);
+    vrUpdate_Free(&w->pending);
     free(w);
 }
 
@@ -193,6 +199,7 @@ void vrWorld_Restart(vrWorld *w)
     w->subframes = 0;
     w->collisions = 0;
     w->frame_ms = w->sim_ms = w->render_ms = 0;
+    memset(&w->retired, 0, sizeof w->retired);
     w->random_next = 0;
     w->params_dirty = 0;
     vrRandom_Seed(w);
@@ -288,6 +295,20 @@ int vrWorld_ObjectList(const vrWorld *w, vrObjectId *ids, int max)
     return n;
 }
 
+/* a polyhedron from OFF text (a worker gets the text, not the file) */
+static int off_from_text(const char *text, vrPolyhedron **p, char *err, size_t n)
+{
+    char path[] = "/tmp/vroc-off-XXXXXX";
+    int fd = mkstemp(path), r;
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (!f) return fail_msg(err, n, "cannot write a temporary OFF file");
+    r = fputs(text, f) < 0;
+    r |= fclose(f) != 0;
+    r = r ? fail_msg(err, n, "cannot write a temporary OFF file") : vrPolyhedron_FromOFF(path, p, err, n);
+    unlink(path);
+    return r;
+}
+
 static int check_def(const vrObjectDef *d, char *err, size_t n)
 {
     int i;
@@ -311,6 +332,27 @@ static int check_def(const vrObjectDef *d, char *err, size_t n)
     if (bad_range(d->a2, 0, 1e9, 1)) return fail(err, n, "%s must be > 0 (got %g)", "a2", d->a2);
     if (bad_range(d->a3, 0, 1e9, 1)) return fail(err, n, "%s must be > 0 (got %g)", "a3", d->a3);
     return 0;
+}
+
+/* a whole file's text (NUL-terminated), or NULL */
+static char *read_text(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf = NULL;
+    size_t len = 0, cap = 0, got;
+    if (!f) return NULL;
+    do {
+        if (len + 4096 + 1 > cap) {
+            char *nb = realloc(buf, cap = 2 * cap + 4096 + 1);
+            if (!nb) break;
+            buf = nb;
+        }
+        got = fread(buf + len, 1, cap - len - 1, f);
+        len += got;
+    } while (got > 0);
+    fclose(f);
+    if (buf) buf[len] = 0;
+    return buf;
 }
 
 static int shape_changed(const vrObjectDef *a, const vrObjectDef *b)
@@ -355,15 +397,51 @@ int vrWorld_SetObjectDef(vrWorld *w, vrObjectId id, const vrObjectDef *def, char
     if (check_def(def, err, n) != 0) return -1;
     if (def->type == VR_POLYHEDRON && strcmp(def->file, o->def.file) != 0) {
         vrPolyhedron *p = NULL;
-        if (vrPolyhedron_FromOFF(def->file, &p, err, n) != 0) return -1;
+        char *text = read_text(def->file);
+        if (vrPolyhedron_FromOFF(def->file, &p, err, n) != 0) {
+            free(text);
+            return -1;
+        }
+        if (!text) {
+            vrPolyhedron_Free(p);
+            return fail_msg(err, n, "out of memory");
+        }
         vrPolyhedron_Free(o->off);
+        free(o->off_text);
         o->off = p;
+        o->off_text = text;
     }
     old = o->def;
     o->def = *def;
     if (shape_changed(&old, def) || mass_changed(&old, def)) o->built = 0;
     if (!o->live) return 0;
     return apply_live_edit(w, o, &old, err, n);
+}
+
+int vrWorld_PutObject(vrWorld *w, int id, const vrObjectDef *def, const char *off_text, char *err, size_t n)
+{
+    vrObject *o;
+    if (id < 0 || check_def(def, err, n) != 0) return -1;
+    while (w->nobj <= id) {
+        if (w->nobj == w->objcap) {
+            int cap = w->objcap ? 2 * w->objcap : 64;
+            vrObject **no = realloc(w->obj, (size_t)cap * sizeof *no);
+            if (!no) return fail_msg(err, n, "out of memory");
+            w->obj = no;
+            w->objcap = cap;
+        }
+        w->obj[w->nobj++] = NULL;
+    }
+    free_object(w->obj[id]);
+    w->obj[id] = o = calloc(1, sizeof *o);
+    if (!o) return fail_msg(err, n, "out of memory");
+    snprintf(o->name, sizeof o->name, "#%d", id);
+    o->def = *def;
+    o->alive = 1;
+    o->body.id = id;
+    if (def->type == VR_POLYHEDRON && (!off_text || off_from_text(off_text, &o->off, err, n) != 0))
+        return off_text ? -1 : fail_msg(err, n, "polyhedron without its OFF text");
+    return 0;
 }
 
 /* ---- building and placing -------------------------------------------------------------- */
@@ -514,32 +592,45 @@ static int rebuild_dynamic_list(vrWorld *w)
     return 0;
 }
 
+static int pairable(const vrWorld *w, int i, int j)
+{
+    return !(w->obj[i]->body.is_static && w->obj[j]->body.is_static);
+}
+
+int vrWorld_Pending(const vrWorld *w, int id)
+{
+    int i;
+    for (i = 0; i < w->pending.n; i++)
+        if (w->pending.body[i].id == id) return 1;
+    return 0;
+}
+
 /* every dynamic–dynamic and dynamic–static pair of a new object (SPEC 3.3:
- * static–static pairs are never made) */
+ * static–static pairs are never made), to be evaluated at the next span */
 static int add_pairs_of(vrWorld *w, int id)
 {
     int j;
+    if (vrOwner_HoldBody(w->owner, id, &w->obj[id]->body) != 0) return -1;
     for (j = 0; j < w->nobj; j++) {
-        vrObject *p = w->obj[j];
-        if (j == id || !p || !(p->live || j < id)) continue;
-        if (p->body.is_static && w->obj[id]->body.is_static) continue;
+        if (j == id || !w->obj[j] || !w->obj[j]->live || !pairable(w, id, j)) continue;
         if (vrOwner_AddPair(w->owner, j < id ? j : id, j < id ? id : j) != 0) return -1;
     }
     return 0;
 }
 
+/* objects join the simulation: their states go out as changes, so their
+ * pairs are evaluated at the next span start */
 static int make_live(vrWorld *w, char *err, size_t n)
 {
     int i;
     for (i = 0; i < w->nobj; i++) {
         vrObject *o = w->obj[i];
-        if (o && !o->live && vrOwner_HoldBody(w->owner, i, &o->body) != 0) return fail_msg(err, n, "out of memory");
-    }
-    for (i = 0; i < w->nobj; i++) {
-        vrObject *o = w->obj[i];
         if (!o || o->live) continue;
-        if (add_pairs_of(w, i) != 0) return fail_msg(err, n, "out of memory");
         o->live = 1;
+        if (!vrUpdate_Body(&w->pending, &o->body, w->t)) return fail_msg(err, n, "out of memory");
+        if (w->owner && add_pairs_of(w, i) != 0) return fail_msg(err, n, "out of memory");
+        w->structure++;
+        w->check_overlaps = 1;
     }
     return rebuild_dynamic_list(w) == 0 ? 0 : fail_msg(err, n, "out of memory");
 }
@@ -549,19 +640,56 @@ static int apply_params(vrWorld *w)
 {
     vrParams p = vrWorld_Params(w);
     int i;
-    vrOwner_SetParams(w->owner, &p);
+    if (w->owner) vrOwner_SetParams(w->owner, &p);
     w->update.n = 0;
     for (i = 0; i < w->ndyn; i++)
         if (!vrUpdate_Body(&w->update, w->dyn[i], w->t)) return -1;
     w->params_dirty = 0;
+    w->structure++;
     return vrWorld_ApplyUpdate(w, &w->update);
 }
+
+static void retire_owner(vrWorld *w)
+{
+    vrOwnerStats os;
+    if (!w->owner) return;
+    vrOwner_Stats(w->owner, &os);
+    w->retired.checks += os.checks;
+    w->retired.heap_pops += os.heap_pops;
+    w->retired.response.solves += os.response.solves;
+    w->retired.response.refactors += os.response.refactors;
+    w->retired.response.factors += os.response.factors;
+    vrOwner_Free(w->owner);
+    w->owner = NULL;
+}
+
+/* the local owner of every pair; pairs settle from the poses at t unless a
+ * body of theirs changed since the owners last heard */
+static int make_serial_owner(vrWorld *w)
+{
+    vrParams p = vrWorld_Params(w);
+    int i, j;
+    w->owner = vrOwner_Create();
+    if (!w->owner) return -1;
+    vrOwner_SetParams(w->owner, &p);
+    for (i = 0; i < w->nobj; i++)
+        if (w->obj[i] && w->obj[i]->live && vrOwner_HoldBody(w->owner, i, &w->obj[i]->body) != 0) return -1;
+    for (i = 0; i < w->nobj; i++)
+        for (j = i + 1; j < w->nobj; j++) {
+            if (!w->obj[i] || !w->obj[j] || !w->obj[i]->live || !w->obj[j]->live || !pairable(w, i, j)) continue;
+            if (vrOwner_AddPairAt(w->owner, i, j, w->t, vrWorld_Pending(w, i) || vrWorld_Pending(w, j)) != 0) return -1;
+        }
+    return 0;
+}
+
+static const vrOwnerSet *owners(const vrWorld *w);
 
 static int report_overlaps(vrWorld *w, char *err, size_t n)
 {
     int pairs[MAX_REPORTED_OVERLAPS][2], k, i;
     size_t len;
-    k = vrOwner_Overlapping(w->owner, w->t, START_OVERLAP_TOL, pairs, MAX_REPORTED_OVERLAPS);
+    k = owners(w)->overlapping(w, VR_START_OVERLAP, pairs, MAX_REPORTED_OVERLAPS, err, n);
+    if (k < 0) return -1;
     if (k == 0) return 0;
     if (!err || !n) return -1;
     snprintf(err, n, "objects interpenetrate, not starting:");
@@ -576,21 +704,49 @@ static int report_overlaps(vrWorld *w, char *err, size_t n)
     return -1;
 }
 
-int vrWorld_Start(vrWorld *w, char *err, size_t n)
+int vrWorld_Ready(vrWorld *w, char *err, size_t n)
 {
     int i;
     for (i = 0; i < w->nobj; i++)
         if (w->obj[i] && ready(w, w->obj[i], err, n) != 0) return -1;
-    if (!w->owner) {
-        vrParams p = vrWorld_Params(w);
-        w->owner = vrOwner_Create();
-        if (!w->owner) return fail_msg(err, n, "out of memory");
-        vrOwner_SetParams(w->owner, &p);
-        w->params_dirty = 0;
+    return 0;
+}
+
+/* serial or parallel, as the settings say */
+static int choose_owners(vrWorld *w, char *err, size_t n)
+{
+    if (w->s.gps > 0) {
+        if (w->owner) {
+            retire_owner(w);
+            w->structure++;
+        }
+        return vrSgp_Sync(w, err, n);
     }
-    if (make_live(w, err, n) != 0) return -1;
+    if (w->sgp) {
+        vrStats st;
+        memset(&st, 0, sizeof st);
+        vrSgp_Stats(w->sgp, &st);
+        w->retired.checks += st.checks;
+        w->retired.heap_pops += st.heap_pops;
+        w->retired.response.solves += st.klu_solves;
+        w->retired.response.refactors += st.klu_refactors;
+        w->retired.response.factors += st.klu_factors;
+        vrSgp_Free(w->sgp);
+        w->sgp = NULL;
+    }
+    if (!w->owner && make_serial_owner(w) != 0) return fail_msg(err, n, "out of memory");
+    return 0;
+}
+
+int vrWorld_Start(vrWorld *w, char *err, size_t n)
+{
+    if (vrWorld_Ready(w, err, n) != 0 || make_live(w, err, n) != 0) return -1;
     if (w->params_dirty && apply_params(w) != 0) return fail_msg(err, n, "out of memory");
-    if (report_overlaps(w, err, n) != 0) return -1;
+    if (choose_owners(w, err, n) != 0) return -1;
+    if (w->check_overlaps) {
+        if (report_overlaps(w, err, n) != 0) return -1;
+        w->check_overlaps = 0;
+    }
     w->started = 1;
     return 0;
 }
@@ -616,15 +772,57 @@ int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up)
     int i;
     if (up->n == 0) return 0;
     if (vrRest_WakeDependents(w, up, up->body[0].t) != 0) return -1;
-    w->nchanged = 0;
     for (i = 0; i < up->n; i++) {
+        vrBodyState *st;
         vrObject *o = w->obj[up->body[i].id];
         vrBody_Apply(&o->body, &up->body[i], &f);
-        if (note_changed(w, up->body[i].id) != 0) return -1;
+        st = vrUpdate_Body(&w->pending, &o->body, up->body[i].t);
+        if (!st) return -1;
+        *st = up->body[i];
     }
-    if (w->owner) vrOwner_BodiesChanged(w->owner, w->changed, w->nchanged);
     return 0;
 }
+
+/* ---- the local owner ------------------------------------------------------------------ */
+
+/* the owner hears of the bodies that changed since it last looked */
+static int deliver(vrWorld *w)
+{
+    int i;
+    w->nchanged = 0;
+    for (i = 0; i < w->pending.n; i++)
+        if (note_changed(w, w->pending.body[i].id) != 0) return -1;
+    vrOwner_BodiesChanged(w->owner, w->changed, w->nchanged);
+    w->pending.n = 0;
+    return 0;
+}
+
+static int serial_first_event(vrWorld *w, const vrGrid *g, int allow, vrEvent *ev, char *err, size_t n)
+{
+    int r;
+    if (deliver(w) != 0) return fail_msg(err, n, "out of memory");
+    r = vrOwner_FirstEvent(w->owner, g, allow, ev);
+    return r < 0 ? fail_msg(err, n, "out of memory") : r;
+}
+
+static int serial_respond(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, size_t n)
+{
+    vrOwner_Advance(w->owner, ev->t);
+    if (vrOwner_Respond(w->owner, ev, up) != 0) return fail_msg(err, n, "collision response: the linear solve failed");
+    return 0;
+}
+
+static void serial_end_frame(vrWorld *w, double T) { vrOwner_Advance(w->owner, T); }
+
+static int serial_overlapping(vrWorld *w, double tol, int (*out)[2], int max, char *err, size_t n)
+{
+    if (deliver(w) != 0) return fail_msg(err, n, "out of memory");
+    return vrOwner_Overlapping(w->owner, w->t, tol, out, max);
+}
+
+static const vrOwnerSet serial_owners = {serial_first_event, serial_respond, serial_end_frame, serial_overlapping};
+
+static const vrOwnerSet *owners(const vrWorld *w) { return w->s.gps > 0 ? &vrSgp_Owners : &serial_owners; }
 
 /* a definition edited while the simulation runs acts on the live body at
  * the world's time (the start of the next frame): a new shape or mass keeps
@@ -638,8 +836,11 @@ static int apply_live_edit(vrWorld *w, vrObject *o, const vrObjectDef *old, char
     int was_static = o->body.is_static;
     if (o->built && !motion_edited(old, &o->def)) {
         o->body.elasticity = o->def.elasticity;
+        w->structure++;                  /* workers rebuild it with the new elasticity */
         return 0;
     }
+    if (!o->built) w->structure++;
+    w->check_overlaps = 1;
     vrBody_Pose(&o->body, w->t, &pose);
     omega = vrBody_Omega(&o->body, &pose);
     w->update.n = 0;
@@ -656,11 +857,19 @@ static int apply_live_edit(vrWorld *w, vrObject *o, const vrObjectDef *old, char
     st->resting = 0;
     st->nsupport = 0;
     if (was_static != o->body.is_static) {
-        vrOwner_DropBody(w->owner, o->body.id);
+        if (w->owner) vrOwner_DropBody(w->owner, o->body.id);
         o->live = 0;
         if (make_live(w, err, n) != 0) return -1;
     }
     return vrWorld_ApplyUpdate(w, &w->update) == 0 ? 0 : fail_msg(err, n, "out of memory");
+}
+
+static void drop_pending(vrWorld *w, int id)
+{
+    int i, k = 0;
+    for (i = 0; i < w->pending.n; i++)
+        if (w->pending.body[i].id != id) w->pending.body[k++] = w->pending.body[i];
+    w->pending.n = k;
 }
 
 int vrWorld_DeleteObject(vrWorld *w, vrObjectId id)
@@ -685,8 +894,10 @@ int vrWorld_DeleteObject(vrWorld *w, vrObjectId id)
             st->nsupport = k;
             st->resting = 0;
         }
-        vrOwner_DropBody(w->owner, id);
+        if (w->owner) vrOwner_DropBody(w->owner, id);
         w->obj[id] = NULL;
+        drop_pending(w, id);
+        w->structure++;
         if (vrWorld_ApplyUpdate(w, &w->update) != 0) return -1;
     }
     w->obj[id] = NULL;
@@ -696,7 +907,7 @@ int vrWorld_DeleteObject(vrWorld *w, vrObjectId id)
 
 /* ---- the frame loop -------------------------------------------------------------------- */
 
-/* Runs [t, t + time_step]: ARCHITECTURE "the loop, once" with one owner. */
+/* Runs [t, t + time_step]: ARCHITECTURE "the loop, once". */
 static int run_frame(vrWorld *w, char *err, size_t n)
 {
     double T = w->t + w->s.time_step, ts = w->t, instant_t = -INFINITY;
@@ -708,23 +919,30 @@ static int run_frame(vrWorld *w, char *err, size_t n)
         vrEvent ev;
         int r;
         vrSchedule_Grid(w->dyn, w->ndyn, ts, T, p.d, w->s.internal_step, &p.flight, &g);
-        r = vrOwner_FirstEvent(w->owner, &g, instant < VR_INSTANT_MAX, &ev);
-        if (r < 0) return fail_msg(err, n, "out of memory");
+        r = owners(w)->first_event(w, &g, instant < VR_INSTANT_MAX, &ev, err, n);
+        if (r == VR_RESTART_FRAME) goto restart;
+        if (r < 0) return -1;
         if (r == 0) {
-            vrOwner_Advance(w->owner, T);
+            owners(w)->end_frame(w, T);
             w->subframes += g.n;
             break;
         }
         w->subframes += ev.t > ts ? vrSchedule_FirstPointAtOrAfter(&g, ev.t) : 0;
-        vrOwner_Advance(w->owner, ev.t);
         w->update.n = 0;
-        if (vrOwner_Respond(w->owner, &ev, &w->update) != 0)
-            return fail_msg(err, n, "collision response: the linear solve failed");
+        r = owners(w)->respond(w, &ev, &w->update, err, n);
+        if (r == VR_RESTART_FRAME) goto restart;
+        if (r != 0) return -1;
         if (ev.kind == VR_EV_IMPACT || ev.kind == VR_EV_CONTACT) w->collisions++;
         if (vrWorld_ApplyUpdate(w, &w->update) != 0) return fail_msg(err, n, "out of memory");
         instant = ev.t == instant_t ? instant + 1 : 1;
         instant_t = ev.t;
         ts = ev.t;
+        continue;
+    restart:                 /* a worker died: the frame again from its start */
+        ts = w->t;
+        instant = 0;
+        instant_t = -INFINITY;
+        w->subframes = 0;
     }
     w->t = T;
     w->frames++;
@@ -825,15 +1043,21 @@ void vrWorld_GetStats(const vrWorld *cw, vrStats *st)
     st->pairs = (long)st->dynamic * (st->dynamic - 1) / 2 + (long)st->dynamic * (st->objects - st->dynamic);
     st->subframes = w->subframes;
     st->subframes_thesis = (long)ceil(w->s.time_step * 2.0 * w->s.max_linear / w->s.collision_dist);
+    st->checks = w->retired.checks;
+    st->heap_pops = w->retired.heap_pops;
+    st->klu_solves = w->retired.response.solves;
+    st->klu_refactors = w->retired.response.refactors;
+    st->klu_factors = w->retired.response.factors;
     if (w->owner) {
         vrOwnerStats os;
         vrOwner_Stats(w->owner, &os);
-        st->checks = os.checks;
-        st->heap_pops = os.heap_pops;
-        st->klu_solves = os.response.solves;
-        st->klu_refactors = os.response.refactors;
-        st->klu_factors = os.response.factors;
+        st->checks += os.checks;
+        st->heap_pops += os.heap_pops;
+        st->klu_solves += os.response.solves;
+        st->klu_refactors += os.response.refactors;
+        st->klu_factors += os.response.factors;
     }
+    if (w->sgp) vrSgp_Stats(w->sgp, st);
     st->collisions = w->collisions;
     st->frame_ms = w->frame_ms;
     st->sim_ms = w->sim_ms;

@@ -7,6 +7,11 @@
 #include "vroc.h"
 #include "gp.h"
 
+typedef struct vrSgp vrSgp;
+
+/* an owner-set operation's answer: a worker died, the frame starts over */
+#define VR_RESTART_FRAME 2
+
 typedef struct vrObject {
     char name[VR_NAME_MAX + 1];
     vrObjectDef def;
@@ -15,6 +20,7 @@ typedef struct vrObject {
     int live;                /* in the simulation: edits now act on its motion */
     vrPolyhedron *poly;      /* hull (cube, superquadric, OFF) or the sphere's drawing mesh */
     vrPolyhedron *off;       /* OFF file loaded by SetObjectDef, waiting to be built */
+    char *off_text;          /* that file's text, for workers to build the same polyhedron */
     double *draw_verts, *draw_normals;
     int *draw_face_start, *draw_face_verts;
     vrBody body;
@@ -30,7 +36,12 @@ struct vrWorld {
     long frames;
     int started;             /* the pair set exists */
     int params_dirty;        /* settings changed: re-anchor all at the next frame */
-    vrOwner *owner;          /* serial: one owner of every pair */
+    int check_overlaps;      /* objects were added or moved: check before the next frame */
+    long structure;          /* bumped when objects, shapes, masses or settings change */
+    vrOwner *owner;          /* serial: one owner of every pair (NULL while workers run) */
+    struct vrSgp *sgp;       /* parallel: the workers (parallel/sgp.c) */
+    vrUpdate pending;        /* states changed since the owners last heard */
+    vrOwnerStats retired;    /* statistics of owners that are gone */
     vrBody **dyn;            /* live dynamic bodies, for the grid */
     int ndyn, dyncap;
     vrUpdate update;
@@ -45,11 +56,38 @@ struct vrWorld {
     unsigned long long rng;
 };
 
+/* What the coordinator asks of the pair owners (ARCHITECTURE "the loop,
+ * once"): the local owner, or the workers through LCM (parallel/sgp.c).
+ * first_event first delivers the states in w->pending. */
+typedef struct vrOwnerSet {
+    int (*first_event)(vrWorld *w, const vrGrid *g, int allow_instant, vrEvent *ev, char *err, size_t n);
+    /* every clock moves to ev->t; the responder's new states */
+    int (*respond)(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, size_t n);
+    void (*end_frame)(vrWorld *w, double T);
+    /* pairs overlapping deeper than tol among those to be evaluated */
+    int (*overlapping)(vrWorld *w, double tol, int (*out)[2], int max, char *err, size_t n);
+} vrOwnerSet;
+
 vrParams vrWorld_Params(const vrWorld *w);
 vrFlight vrWorld_Flight(const vrWorld *w);
 vrObject *vrWorld_Object(const vrWorld *w, vrObjectId id);
 /* applies an update: wakes what rests on changed bodies, re-anchors, tells the owners */
 int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up);
+
+/* an object at a given id (workers hold a subset of the SGP's objects);
+ * off_text: the OFF file's text for polyhedra, or NULL */
+int vrWorld_PutObject(vrWorld *w, int id, const vrObjectDef *def, const char *off_text, char *err, size_t n);
+/* builds what changed and places new objects; no pairs */
+int vrWorld_Ready(vrWorld *w, char *err, size_t n);
+/* is body id's state in pending (a pair of it is evaluated afresh)? */
+int vrWorld_Pending(const vrWorld *w, int id);
+
+/* parallel/sgp.c */
+extern const vrOwnerSet vrSgp_Owners;
+/* starts or re-sets the workers as the settings and objects require */
+int vrSgp_Sync(vrWorld *w, char *err, size_t n);
+void vrSgp_Free(struct vrSgp *s);
+void vrSgp_Stats(const struct vrSgp *s, vrStats *st);
 
 /* rest.c */
 /* bodies resting on a changed body wake, transitively (SPEC 3.5) */

@@ -1,0 +1,83 @@
+/* link.c — the LCM transport with fault injection for tests. */
+#include <stdlib.h>
+#include <stdio.h>
+#include <time.h>
+#include <unistd.h>
+#include "link.h"
+
+double vrLink_NowMs(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+static double percent_env(const char *name)
+{
+    const char *v = getenv(name);
+    double p = v ? atof(v) : 0;
+    return p > 0 ? (p < 100 ? p / 100 : 1) : 0;
+}
+
+int vrLink_Open(vrLink *l, const char *url, char *err, size_t n)
+{
+    l->lcm = lcm_create(url);
+    l->drop = percent_env("VROC_FAULT_DROP");
+    l->dup = percent_env("VROC_FAULT_DUP");
+    l->rng = (unsigned long long)getpid() * 0x9e3779b97f4a7c15ULL + 1;
+    l->sent = l->dropped = 0;
+    if (!l->lcm) {
+        snprintf(err, n, "cannot open LCM at '%s' (udpm needs a multicast route, e.g. "
+                         "ip route add 224.0.0.0/4 dev lo)", url);
+        return -1;
+    }
+    return 0;
+}
+
+void vrLink_Close(vrLink *l)
+{
+    if (l->lcm) lcm_destroy(l->lcm);
+    l->lcm = NULL;
+}
+
+static double chance(vrLink *l)
+{
+    l->rng = l->rng * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(l->rng >> 11) / 9007199254740992.0;
+}
+
+int vrLink_Publish(vrLink *l, const char *channel, const void *data, int len)
+{
+    int copies = 1, i, r = 0;
+    if (l->drop > 0 && chance(l) < l->drop) {
+        l->dropped++;
+        return 0;
+    }
+    if (l->dup > 0 && chance(l) < l->dup) copies = 2;
+    for (i = 0; i < copies; i++) {
+        r |= lcm_publish(l->lcm, channel, data, (unsigned)len);
+        l->sent++;
+    }
+    return r;
+}
+
+int vrLink_Handle(vrLink *l, int ms) { return lcm_handle_timeout(l->lcm, ms); }
+
+int vrBuf_Reserve(vrBuf *b, int size)
+{
+    if (size < 0) return -1;
+    if (size > b->cap) {
+        void *d = realloc(b->data, (size_t)size);
+        if (!d) return -1;
+        b->data = d;
+        b->cap = size;
+    }
+    return 0;
+}
+
+void vrBuf_Free(vrBuf *b)
+{
+    free(b->data);
+    b->data = NULL;
+    b->len = b->cap = 0;
+}

@@ -1,0 +1,48 @@
+/* link.h — LCM as the transport between the SGP and its workers (SPEC 5).
+ *
+ * Messages are LCM types (the .lcm files beside this one, C code generated at build
+ * time).  Receivers subscribe raw and decode themselves, so that a
+ * malformed message is counted and dropped instead of printed.  For tests,
+ * VROC_FAULT_DROP and VROC_FAULT_DUP (percent) make the link lose or repeat
+ * outgoing messages.
+ */
+#ifndef VROC_LINK_H
+#define VROC_LINK_H
+
+#include <stddef.h>
+#include <lcm/lcm.h>
+
+typedef struct vrLink {
+    lcm_t *lcm;
+    double drop, dup;                  /* fault injection, probabilities */
+    unsigned long long rng;
+    long long sent, dropped;
+} vrLink;
+
+int vrLink_Open(vrLink *l, const char *url, char *err, size_t n);
+void vrLink_Close(vrLink *l);
+int vrLink_Publish(vrLink *l, const char *channel, const void *data, int len);
+/* waits up to ms for messages and dispatches them to the subscribers */
+int vrLink_Handle(vrLink *l, int ms);
+double vrLink_NowMs(void);
+
+/* an encoded message kept for sending (and resending) */
+typedef struct vrBuf { void *data; int len, cap; } vrBuf;
+int vrBuf_Reserve(vrBuf *b, int size);
+void vrBuf_Free(vrBuf *b);
+
+/* encodes an LCM message of generated type T into buffer b; 0 on success */
+#define VR_ENCODE(b, T, msg)                                                             \
+    (vrBuf_Reserve((b), T##_encoded_size(msg)) != 0 ? -1                                 \
+     : ((b)->len = T##_encode((b)->data, 0, (b)->cap, (msg))) < 0 ? -1 : 0)
+
+#define VR_CH_HELLO "VROC_HELLO"
+#define VR_CH_SETUP "VROC_SETUP"
+#define VR_CH_FRAME "VROC_FRAME"
+#define VR_CH_EARLIEST "VROC_EARLIEST"
+#define VR_CH_ADVANCE "VROC_ADVANCE"
+#define VR_CH_UPDATE "VROC_UPDATE"
+#define VR_CH_FORWARD "VROC_FORWARD"
+#define VR_CH_SHUTDOWN "VROC_SHUTDOWN"
+
+#endif

@@ -1,0 +1,398 @@
+/* worker.c — a GP: the thesis's Graphic Processor, a pair owner driven by
+ * the SGP's messages (SPEC 5).  It holds copies of the objects of its pairs
+ * (built from their definitions by the same code as the SGP's, so every
+ * copy moves the same bits) and one vrOwner over its pairs. */
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "worker.h"
+#include "wire.h"
+#include "vroc_advance_t.h"
+#include "vroc_earliest_t.h"
+#include "vroc_frame_start_t.h"
+#include "vroc_hello_t.h"
+#include "vroc_setup_t.h"
+#include "vroc_shutdown_t.h"
+#include "vroc_update_t.h"
+
+#define HELLO_MS 100.0      /* announcements while free, heartbeats while busy */
+
+struct vrWorker {
+    vrLink *link;
+    long long nonce;
+    int forked;
+    pid_t parent;
+    int64_t run, last_seq, reply_seq;
+    int gp;
+    vrBuf reply;                  /* the last answer, for repeated requests */
+    const char *reply_channel;
+    vrWorld *world;               /* its objects (defs and bodies) */
+    vrOwner *owner;
+    vrParams params;
+    vrEvent first;                /* the first event it last reported */
+    int has_first;
+    vrUpdate scratch;
+    int *ids;
+    int idcap;
+    long frames;
+    int kill_gp, kill_frame;      /* VROC_FAULT_KILL=gp:frame */
+    int silent, done;
+    double last_hello;
+    lcm_subscription_t *subs[5];
+};
+
+/* ---- answering ------------------------------------------------------------------ */
+
+static void answer(vrWorker *k, const char *channel, int64_t seq)
+{
+    k->reply_channel = channel;
+    k->reply_seq = seq;
+    vrLink_Publish(k->link, channel, k->reply.data, k->reply.len);
+}
+
+/* Is this request new?  A repeat is answered from the cache (the SGP lost
+ * our answer or we lost its request), a stale or foreign one ignored. */
+static int fresh(vrWorker *k, int64_t run, int64_t seq)
+{
+    if (k->silent || run != k->run || seq < k->last_seq) return 0;
+    if (seq == k->last_seq) {
+        if (k->reply_seq == seq) vrLink_Publish(k->link, k->reply_channel, k->reply.data, k->reply.len);
+        return 0;
+    }
+    k->last_seq = seq;
+    return 1;
+}
+
+static void send_earliest(vrWorker *k, int64_t seq, int found, const vrEvent *ev,
+                          int noverlap, int32_t *a, int32_t *b, const char *error)
+{
+    vroc_earliest_t m;
+    vrOwnerStats os;
+    memset(&m, 0, sizeof m);
+    memset(&os, 0, sizeof os);
+    if (k->owner) vrOwner_Stats(k->owner, &os);
+    m.run = k->run;
+    m.seq = seq;
+    m.gp = k->gp;
+    m.found = (int8_t)found;
+    if (found) {
+        m.t = ev->t;
+        m.order = ev->order;
+        m.kind = (int8_t)ev->kind;
+    }
+    m.checks = os.checks;
+    m.heap_pops = os.heap_pops;
+    m.copies = k->owner ? vrOwner_BodyCount(k->owner) : 0;
+    m.noverlap = noverlap;
+    m.a = a;
+    m.b = b;
+    m.error = (char *)(error ? error : "");
+    if (VR_ENCODE(&k->reply, vroc_earliest_t, &m) == 0) answer(k, VR_CH_EARLIEST, seq);
+}
+
+/* heartbeat while a long look-ahead keeps us from answering */
+static void beat(void *ctx)
+{
+    vrWorker *k = ctx;
+    double now = vrLink_NowMs();
+    vroc_hello_t m;
+    vrBuf b = {NULL, 0, 0};
+    if (now - k->last_hello < HELLO_MS) return;
+    k->last_hello = now;
+    m.nonce = k->nonce;
+    m.pid = (int32_t)getpid();
+    m.run = k->run;
+    m.gp = k->gp;
+    m.seq = k->last_seq;
+    if (VR_ENCODE(&b, vroc_hello_t, &m) == 0) vrLink_Publish(k->link, VR_CH_HELLO, b.data, b.len);
+    vrBuf_Free(&b);
+}
+
+/* ---- state ---------------------------------------------------------------------------- */
+
+static int held(const vrWorker *k, int id)
+{
+    vrObject *o = vrWorld_Object(k->world, id);
+    return o && o->built;
+}
+
+/* applies the SGP's states to the bodies held here; their pairs are
+ * evaluated at the next span start */
+static int apply_states(vrWorker *k, const vroc_body_state_t *states, int n)
+{
+    int i, nid = 0;
+    k->scratch.n = 0;
+    if (vrWire_GetStates(states, n, 1 << 30, &k->scratch) != 0) return -1;
+    if (n > k->idcap) {
+        int *ni = realloc(k->ids, (size_t)n * sizeof *ni);
+        if (!ni) return -1;
+        k->ids = ni;
+        k->idcap = n;
+    }
+    for (i = 0; i < k->scratch.n; i++) {
+        const vrBodyState *st = &k->scratch.body[i];
+        if (!held(k, st->id)) continue;
+        vrBody_Apply(&vrWorld_Object(k->world, st->id)->body, st, &k->params.flight);
+        k->ids[nid++] = st->id;
+    }
+    vrOwner_BodiesChanged(k->owner, k->ids, nid);
+    return 0;
+}
+
+/* the objects and pairs of a setup: built from definitions, placed at
+ * their states, pairs settled from the poses or flagged */
+static int build(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
+{
+    int i;
+    if (vrWire_GetParams(&m->params, &k->params) != 0) return snprintf(err, n, "bad settings"), -1;
+    vrWorld_Restart(k->world);
+    vrOwner_Free(k->owner);
+    k->owner = NULL;
+    for (i = 0; i < m->nbodies; i++) {
+        vrObjectDef d;
+        if (vrWire_GetDef(&m->defs[i], &d) != 0) return snprintf(err, n, "bad object definition"), -1;
+        if (vrWorld_PutObject(k->world, m->defs[i].id, &d, m->defs[i].off, err, n) != 0) return -1;
+    }
+    if (vrWorld_Ready(k->world, err, n) != 0) return -1;
+    k->owner = vrOwner_Create();
+    if (!k->owner) return snprintf(err, n, "out of memory"), -1;
+    vrOwner_SetParams(k->owner, &k->params);
+    vrOwner_SetProgress(k->owner, beat, k);
+    for (i = 0; i < m->nbodies; i++) {
+        vrObject *o = vrWorld_Object(k->world, m->defs[i].id);
+        if (vrOwner_HoldBody(k->owner, o->body.id, &o->body) != 0) return snprintf(err, n, "out of memory"), -1;
+    }
+    if (apply_states(k, m->states, m->nbodies) != 0) return snprintf(err, n, "bad body state"), -1;
+    for (i = 0; i < m->npairs; i++) {
+        if (!held(k, m->a[i]) || !held(k, m->b[i]) || m->a[i] >= m->b[i]) return snprintf(err, n, "bad pair"), -1;
+        if (vrOwner_AddPairAt(k->owner, m->a[i], m->b[i], m->t, m->flagged[i]) != 0) return snprintf(err, n, "out of memory"), -1;
+    }
+    return 0;
+}
+
+/* ---- requests ---------------------------------------------------------------------------- */
+
+static void look_ahead(vrWorker *k, int64_t seq, const vroc_grid_t *grid, int allow)
+{
+    vrGrid g;
+    int r;
+    if (vrWire_GetGrid(grid, &g) != 0) {
+        send_earliest(k, seq, 0, NULL, 0, NULL, NULL, "bad grid");
+        return;
+    }
+    r = vrOwner_FirstEvent(k->owner, &g, allow, &k->first);
+    k->has_first = r == 1;
+    send_earliest(k, seq, r == 1, &k->first, 0, NULL, NULL, r < 0 ? "out of memory" : NULL);
+}
+
+static void check_overlaps(vrWorker *k, int64_t seq, double t)
+{
+    int (*pairs)[2] = NULL, nmax = 64, count, i;
+    int32_t *a, *b;
+    pairs = malloc((size_t)nmax * sizeof *pairs);
+    count = pairs ? vrOwner_Overlapping(k->owner, t, VR_START_OVERLAP, pairs, nmax) : 0;
+    if (count > nmax) count = nmax;
+    a = malloc((size_t)(count + 1) * sizeof *a);
+    b = malloc((size_t)(count + 1) * sizeof *b);
+    for (i = 0; a && b && i < count; i++) {
+        a[i] = pairs[i][0];
+        b[i] = pairs[i][1];
+    }
+    send_earliest(k, seq, 0, NULL, a && b ? count : 0, a, b, pairs && a && b ? NULL : "out of memory");
+    free(pairs);
+    free(a);
+    free(b);
+}
+
+static void on_setup(const lcm_recv_buf_t *rb, const char *ch, void *user)
+{
+    vrWorker *k = user;
+    vroc_setup_t m;
+    char err[256] = "";
+    (void)ch;
+    if (vroc_setup_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
+    if (m.nonce == k->nonce && !k->silent) {
+        if (m.run != k->run) {           /* a new run claims this worker */
+            k->run = m.run;
+            k->last_seq = k->reply_seq = -1;
+            k->frames = 0;
+        }
+        if (fresh(k, m.run, m.seq)) {
+            k->gp = m.gp;
+            if (build(k, &m, err, sizeof err) != 0 && !err[0]) strcpy(err, "setup failed");
+            send_earliest(k, m.seq, 0, NULL, 0, NULL, NULL, err[0] ? err : NULL);
+        }
+    }
+    vroc_setup_t_decode_cleanup(&m);
+}
+
+/* VROC_FAULT_KILL=gp:frame — the worker dies at that frame's start (tests) */
+static void maybe_die(vrWorker *k)
+{
+    if (k->gp != k->kill_gp || k->frames != k->kill_frame) return;
+    if (k->forked) raise(SIGKILL);
+    k->silent = 1;                       /* in one process: fall silent instead */
+}
+
+static void on_frame(const lcm_recv_buf_t *rb, const char *ch, void *user)
+{
+    vrWorker *k = user;
+    vroc_frame_start_t m;
+    (void)ch;
+    if (vroc_frame_start_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
+    if (k->owner && fresh(k, m.run, m.seq) && isfinite(m.t)) {
+        if (!m.check) {
+            k->frames++;
+            maybe_die(k);
+        }
+        if (!k->silent) {
+            vrOwner_Advance(k->owner, m.t);
+            if (apply_states(k, m.states, m.nstates) != 0) send_earliest(k, m.seq, 0, NULL, 0, NULL, NULL, "bad body state");
+            else if (m.check) check_overlaps(k, m.seq, m.t);
+            else look_ahead(k, m.seq, &m.grid, m.allow_instant);
+        }
+    }
+    vroc_frame_start_t_decode_cleanup(&m);
+}
+
+static void on_advance(const lcm_recv_buf_t *rb, const char *ch, void *user)
+{
+    vrWorker *k = user;
+    vroc_advance_t m;
+    vroc_update_t u;
+    vrWireStates ws;
+    vrResponseStats rs;
+    vrOwnerStats os;
+    (void)ch;
+    if (vroc_advance_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
+    if (!k->owner || !fresh(k, m.run, m.seq) || m.responder != k->gp) return;
+    if (!k->has_first || k->first.order != m.order || k->first.t != m.t) return;
+    vrOwner_Advance(k->owner, m.t);
+    k->scratch.n = 0;
+    if (vrOwner_Respond(k->owner, &k->first, &k->scratch) != 0) return;   /* silence: the SGP gives up on us */
+    memset(&u, 0, sizeof u);
+    memset(&ws, 0, sizeof ws);
+    vrOwner_Stats(k->owner, &os);
+    rs = os.response;
+    u.run = k->run;
+    u.seq = m.seq;
+    u.gp = k->gp;
+    u.t = m.t;
+    u.solves = rs.solves;
+    u.refactors = rs.refactors;
+    u.factors = rs.factors;
+    if (vrWire_PutStates(&ws, &k->scratch) == 0) {
+        u.nstates = ws.n;
+        u.states = ws.m;
+        if (VR_ENCODE(&k->reply, vroc_update_t, &u) == 0) answer(k, VR_CH_UPDATE, m.seq);
+    }
+    vrWire_FreeStates(&ws);
+}
+
+static void on_forward(const lcm_recv_buf_t *rb, const char *ch, void *user)
+{
+    vrWorker *k = user;
+    vroc_update_t m;
+    (void)ch;
+    if (vroc_update_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
+    if (k->owner && m.gp < 0 && fresh(k, m.run, m.seq) && isfinite(m.t)) {
+        vrOwner_Advance(k->owner, m.t);
+        if (apply_states(k, m.states, m.nstates) != 0) send_earliest(k, m.seq, 0, NULL, 0, NULL, NULL, "bad body state");
+        else look_ahead(k, m.seq, &m.grid, m.allow_instant);
+    }
+    vroc_update_t_decode_cleanup(&m);
+}
+
+static void on_shutdown(const lcm_recv_buf_t *rb, const char *ch, void *user)
+{
+    vrWorker *k = user;
+    vroc_shutdown_t m;
+    (void)ch;
+    if (vroc_shutdown_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
+    if (k->run != 0 && m.run == k->run) k->done = 1;
+}
+
+/* ---- life ----------------------------------------------------------------------------------- */
+
+static void parse_kill(vrWorker *k)
+{
+    const char *v = getenv("VROC_FAULT_KILL");
+    k->kill_gp = k->kill_frame = -1;
+    if (v && sscanf(v, "%d:%d", &k->kill_gp, &k->kill_frame) != 2) k->kill_gp = k->kill_frame = -1;
+}
+
+vrWorker *vrWorker_Create(vrLink *link, long long nonce, int forked)
+{
+    vrWorker *k = calloc(1, sizeof *k);
+    if (!k) return NULL;
+    k->link = link;
+    k->nonce = nonce;
+    k->forked = forked;
+    k->parent = getppid();
+    k->gp = -1;
+    k->last_seq = k->reply_seq = -1;
+    k->world = vrWorld_Create();
+    vrUpdate_Init(&k->scratch);
+    parse_kill(k);
+    k->subs[0] = lcm_subscribe(link->lcm, VR_CH_SETUP, on_setup, k);
+    k->subs[1] = lcm_subscribe(link->lcm, VR_CH_FRAME, on_frame, k);
+    k->subs[2] = lcm_subscribe(link->lcm, VR_CH_ADVANCE, on_advance, k);
+    k->subs[3] = lcm_subscribe(link->lcm, VR_CH_FORWARD, on_forward, k);
+    k->subs[4] = lcm_subscribe(link->lcm, VR_CH_SHUTDOWN, on_shutdown, k);
+    if (!k->world || !k->subs[0] || !k->subs[1] || !k->subs[2] || !k->subs[3] || !k->subs[4]) {
+        vrWorker_Free(k);
+        return NULL;
+    }
+    return k;
+}
+
+void vrWorker_Free(vrWorker *k)
+{
+    int i;
+    if (!k) return;
+    for (i = 0; i < 5; i++)
+        if (k->subs[i]) lcm_unsubscribe(k->link->lcm, k->subs[i]);
+    vrOwner_Free(k->owner);
+    vrWorld_Destroy(k->world);
+    vrUpdate_Free(&k->scratch);
+    vrBuf_Free(&k->reply);
+    free(k->ids);
+    free(k);
+}
+
+int vrWorker_Tick(vrWorker *k)
+{
+    if (k->run == 0) {             /* free: tell the SGPs we are here */
+        k->last_hello = 0;
+        beat(k);
+    }
+    if (k->forked && getppid() != k->parent) k->done = 1;   /* our SGP is gone */
+    return k->done;
+}
+
+int vrWorker_Main(const char *url, long long nonce, int forked, char *err, size_t n)
+{
+    vrLink link;
+    vrWorker *k;
+    double last = 0;
+    if (vrLink_Open(&link, url, err, n) != 0) return -1;
+    k = vrWorker_Create(&link, nonce, forked);
+    if (!k) {
+        vrLink_Close(&link);
+        snprintf(err, n, "out of memory");
+        return -1;
+    }
+    while (!k->done) {
+        double now;
+        vrLink_Handle(&link, (int)HELLO_MS);
+        now = vrLink_NowMs();
+        if (now - last >= HELLO_MS) {
+            last = now;
+            vrWorker_Tick(k);
+        }
+    }
+    vrWorker_Free(k);
+    vrLink_Close(&link);
+    return 0;
+}
