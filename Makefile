@@ -59,7 +59,7 @@ $(1)_OBJ := $$(patsubst %.c,build/$(1)/%.o,$$(LIB_SRC)) \
 $(1)_TESTS := $$(patsubst tests/%.c,build/$(1)/tests/%,$$(TEST_SRC))
 $(1)_BENCH := $$(patsubst tests/%.c,build/$(1)/tests/%,$$(BENCH_SRC))
 
-build/$(1)/%.o: %.c $$(LCM_GEN) | deps
+build/$(1)/%.o: %.c | $$(LCM_GEN) deps
 	@mkdir -p $$(@D)
 	$$(CC) $$(WARN) $$(DEFS) $$(INCS) -Ibuild/gen $$($(1)_CFLAGS) -MMD -MP -c $$< -o $$@
 

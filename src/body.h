@@ -84,6 +84,9 @@ void vrBody_SetMassProperties(vrBody *b, double mass, const mat33 *inertia_unit,
  * (SPEC 3.2: at the start and at every event), recomputes the acceleration
  * from the supports and the cap time */
 void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vrFlight *f);
+/* sets the anchor exactly as given (one captured with vrBody_CaptureAnchor):
+ * no clamping, no normalising; what derives from it is recomputed */
+void vrBody_Restore(vrBody *b, double t0, vec3 x0, vec3 v0, quat q0, vec3 L, const vrFlight *f);
 /* re-anchor at t keeping the motion (after a change of settings or supports) */
 void vrBody_Reanchor(vrBody *b, double t, const vrFlight *f);
 void vrBody_Pose(vrBody *b, double t, vrPose *pose);

@@ -27,6 +27,23 @@ void vrBody_Capture(vrBody *b, double t, vrBodyState *st)
     st->q = p.q;
     vrBody_Velocity(b, t, &st->v);
     st->L = b->m.L;
+    st->raw = 0;
+    st->resting = b->resting;
+    st->hit = b->hit;
+    st->nsupport = b->nsupport;
+    for (i = 0; i < b->nsupport; i++) st->support[i] = b->support[i];
+}
+
+void vrBody_CaptureAnchor(const vrBody *b, vrBodyState *st)
+{
+    int i;
+    st->id = b->id;
+    st->t = b->m.t0;
+    st->x = b->m.x0;
+    st->v = b->m.v0;
+    st->q = b->m.q0;
+    st->L = b->m.L;
+    st->raw = 1;
     st->resting = b->resting;
     st->hit = b->hit;
     st->nsupport = b->nsupport;
@@ -56,5 +73,6 @@ void vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f)
     b->hit = st->hit;
     b->nsupport = st->nsupport;
     for (i = 0; i < st->nsupport; i++) b->support[i] = st->support[i];
-    vrBody_Anchor(b, st->t, st->x, st->v, st->q, st->L, f);
+    if (st->raw) vrBody_Restore(b, st->t, st->x, st->v, st->q, st->L, f);
+    else vrBody_Anchor(b, st->t, st->x, st->v, st->q, st->L, f);
 }

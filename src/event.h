@@ -33,12 +33,16 @@ static inline int vrEvent_Before(const vrEvent *x, const vrEvent *y)
     return x->t < y->t || (x->t == y->t && x->order < y->order);
 }
 
-/* a body's new state after an event: everything a holder needs to re-anchor */
+/* A body's new state after an event: everything a holder needs to
+ * re-anchor.  raw = 1: x, v, q, L are the body's anchor itself at t = t0,
+ * to be restored bit for bit (setups, snapshots); raw = 0: the state at an
+ * event, re-anchored there (clamped, normalised) by every holder alike. */
 typedef struct vrBodyState {
     int id;
     double t;
     vec3 x, v, L;
     quat q;
+    int raw;
     int resting, hit;
     int nsupport;
     vrSupport support[VR_MAX_SUPPORTS];
@@ -51,6 +55,8 @@ void vrUpdate_Free(vrUpdate *u);
 /* the slot of body id in u, added as a capture of b at time t if absent */
 vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t);
 void vrBody_Capture(vrBody *b, double t, vrBodyState *st);
+/* the body's anchor as it is (raw = 1) */
+void vrBody_CaptureAnchor(const vrBody *b, vrBodyState *st);
 void vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f);
 
 #endif

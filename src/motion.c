@@ -256,6 +256,20 @@ void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vr
     reset_rotation_cache(b);
 }
 
+void vrBody_Restore(vrBody *b, double t0, vec3 x0, vec3 v0, quat q0, vec3 L, const vrFlight *f)
+{
+    vrMotion *m = &b->m;
+    m->t0 = t0;
+    m->x0 = x0;
+    m->v0 = v0;
+    m->q0 = q0;
+    m->L = L;
+    m->a = b->is_static || b->resting ? vec3_zero() : supported_accel(b, f->accel);
+    m->tcap = cap_time(m->v0, m->a, f->max_linear);
+    classify_rotation(b);
+    reset_rotation_cache(b);
+}
+
 void vrBody_Reanchor(vrBody *b, double t, const vrFlight *f)
 {
     vrPose p;

@@ -77,4 +77,27 @@ void vrMass_VolumeCentroid(const vrPolyhedron *p, double *volume, vec3 *centroid
  * principal axes (body frame), of a symmetric matrix, by Jacobi sweeps */
 void vrMass_Principal(const mat33 *inertia, vec3 *moments, mat33 *axes);
 
+/* ---- shared by the geometry files (polyhedron.c, hull.c, off.c) --------- */
+
+/* relative tolerance (of the shape's size, the diagonal of its bounding
+ * box) within which facets count as coplanar (SPEC 2) */
+#define VR_COPLANAR_TOL 1e-9
+
+/* A polyhedron from its vertices and the boundary loops of its faces
+ * (counter-clockwise seen from outside, convex, every vertex used, closed
+ * 2-manifold): centres it on its centre of mass, computes planes, the feature
+ * graph, area-weighted smooth normals and the mass properties.  Refuses a
+ * surface that is not closed, not planar or not convex within tol (relative). */
+int vrPolyhedron_FromFaces(const vec3 *vert, int nv, const int *face_start, const int *face_vert, int nf,
+                           double tol, vrPolyhedron **out, char *err, size_t errlen);
+/* vrPolyhedron_Hull with its relative tolerance tol.  When src is not NULL,
+ * *src receives a malloc'ed array of nv entries: the index in pts of each
+ * vertex of the result (the caller frees it). */
+int vrPolyhedron_HullTol(const vec3 *pts, int n, double tol, int **src, vrPolyhedron **out, char *err,
+                         size_t errlen);
+/* the diagonal of the bounding box of n points: the size tolerances scale with */
+double vrGeom_Size(const vec3 *pts, int n);
+/* formats a message into err (when err is not NULL and errlen > 0); returns -1 */
+int vrGeom_Fail(char *err, size_t errlen, const char *fmt, ...);
+
 #endif

@@ -32,7 +32,7 @@
 #include "vroc_update_t.h"
 
 #define MAX_GPS 64
-#define RESEND_MS 20.0
+#define RESEND_MS 5.0
 #define RESEND_MAX_MS 200.0
 #define DEADLINE_MS 1000.0      /* SPEC 5: a worker silent this long is dead */
 #define ANNOUNCE_MS 10000.0     /* workers have this long to announce themselves */
@@ -349,6 +349,15 @@ static int deal(const vrWorld *w, const vrSgp *s, int **pi, int **pj, vrDeal *d)
     return 0;
 }
 
+/* appends b's anchor as it is, to be restored bit for bit */
+static int anchor_of(vrUpdate *up, vrBody *b)
+{
+    vrBodyState *st = vrUpdate_Body(up, b, b->m.t0);
+    if (!st) return -1;
+    vrBody_CaptureAnchor(b, st);
+    return 0;
+}
+
 /* the setup of worker g: the objects of its pairs, the pairs */
 static int encode_setup(vrWorld *w, vrSgp *s, int g, const int *pi, const int *pj, const vrDeal *d)
 {
@@ -378,7 +387,7 @@ static int encode_setup(vrWorld *w, vrSgp *s, int g, const int *pi, const int *p
         for (i = 0; i < w->nobj; i++)
             if (need[i]) {
                 vrWire_PutDef(&defs[m.nbodies++], i, &w->obj[i]->def, w->obj[i]->off_text);
-                if (!vrUpdate_Body(&states, &w->obj[i]->body, w->t)) break;
+                if (anchor_of(&states, &w->obj[i]->body) != 0) break;
             }
         if (i == w->nobj && vrWire_PutStates(&ws, &states) == 0) {
             m.run = s->run;
@@ -615,7 +624,7 @@ static void snapshot(vrWorld *w, vrSgp *s)
     int i;
     s->snap.n = 0;
     for (i = 0; i < w->nobj; i++)
-        if (w->obj[i] && w->obj[i]->live) vrUpdate_Body(&s->snap, &w->obj[i]->body, w->t);
+        if (w->obj[i] && w->obj[i]->live) anchor_of(&s->snap, &w->obj[i]->body);
     s->snap_collisions = w->collisions;
 }
 

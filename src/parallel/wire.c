@@ -31,6 +31,7 @@ int vrWire_PutStates(vrWireStates *w, const vrUpdate *up)
         put3(m->v, st->v);
         put3(m->L, st->L);
         m->q[0] = st->q.w; m->q[1] = st->q.x; m->q[2] = st->q.y; m->q[3] = st->q.z;
+        m->raw = (int8_t)st->raw;
         m->resting = (int8_t)st->resting;
         m->hit = (int8_t)st->hit;
         m->nsupport = st->nsupport;
@@ -66,6 +67,7 @@ static int get_state(const vroc_body_state_t *m, int max_id, vrBodyState *st)
     st->v = get3(m->v);
     st->L = get3(m->L);
     st->q = quat_make(m->q[0], m->q[1], m->q[2], m->q[3]);
+    st->raw = m->raw != 0;
     st->resting = m->resting != 0;
     st->hit = m->hit != 0;
     st->nsupport = m->nsupport;

@@ -1,0 +1,495 @@
+/* polyhedron.c — convex polyhedra and their feature graph (SPEC 2).
+ *
+ * Every builder ends in vrPolyhedron_FromFaces: vertices plus the
+ * counter-clockwise boundary loop of each face.  From the loops it derives
+ * everything the closest-feature walk needs (the conventions are in
+ * polyhedron.h): half-edge twins, edges with their left/right faces, the
+ * edges about each vertex counter-clockwise, and the face planes.  The cube
+ * and the sphere mesh are written down directly; the superquadric is the
+ * convex hull (hull.c) of its samples.
+ */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "polyhedron.h"
+
+int vrGeom_Fail(char *err, size_t errlen, const char *fmt, ...)
+{
+    va_list ap;
+    if (err && errlen > 0) {
+        va_start(ap, fmt);
+        vsnprintf(err, errlen, fmt, ap);
+        va_end(ap);
+    }
+    return -1;
+}
+
+double vrGeom_Size(const vec3 *pts, int n)
+{
+    vec3 lo, hi;
+    int i;
+    if (n <= 0) return 0;
+    lo = hi = pts[0];
+    for (i = 1; i < n; i++) {
+        lo = vec3_make(fmin(lo.x, pts[i].x), fmin(lo.y, pts[i].y), fmin(lo.z, pts[i].z));
+        hi = vec3_make(fmax(hi.x, pts[i].x), fmax(hi.y, pts[i].y), fmax(hi.z, pts[i].z));
+    }
+    return vec3_dist(lo, hi);
+}
+
+void vrPolyhedron_Free(vrPolyhedron *p)
+{
+    if (!p) return;
+    free(p->vert);
+    free(p->vert_normal);
+    free(p->edge_v);
+    free(p->edge_f);
+    free(p->vert_edge_start);
+    free(p->vert_edge);
+    free(p->face_start);
+    free(p->face_vert);
+    free(p->face_edge);
+    free(p->face_normal);
+    free(p->face_offset);
+    free(p);
+}
+
+/* nh: total length of the face loops (the number of half-edges) */
+static vrPolyhedron *poly_alloc(int nv, int nf, int nh)
+{
+    vrPolyhedron *p = calloc(1, sizeof *p);
+    if (!p) return NULL;
+    p->nv = nv;
+    p->nf = nf;
+    p->ne = nh / 2;
+    p->vert = malloc(sizeof *p->vert * nv);
+    p->vert_normal = calloc(nv, sizeof *p->vert_normal);
+    p->edge_v = malloc(sizeof *p->edge_v * (p->ne + 1));
+    p->edge_f = malloc(sizeof *p->edge_f * (p->ne + 1));
+    p->vert_edge_start = calloc(nv + 1, sizeof *p->vert_edge_start);
+    p->vert_edge = malloc(sizeof *p->vert_edge * nh);
+    p->face_start = malloc(sizeof *p->face_start * (nf + 1));
+    p->face_vert = malloc(sizeof *p->face_vert * nh);
+    p->face_edge = malloc(sizeof *p->face_edge * nh);
+    p->face_normal = malloc(sizeof *p->face_normal * nf);
+    p->face_offset = malloc(sizeof *p->face_offset * nf);
+    if (!p->vert || !p->vert_normal || !p->edge_v || !p->edge_f || !p->vert_edge_start || !p->vert_edge
+        || !p->face_start || !p->face_vert || !p->face_edge || !p->face_normal || !p->face_offset) {
+        vrPolyhedron_Free(p);
+        return NULL;
+    }
+    return p;
+}
+
+/* ---- half-edges ----------------------------------------------------------
+ * Half-edge h is position h of face_vert: it runs from face_vert[h] to the
+ * next vertex of the same loop. */
+typedef struct HalfEdges {
+    int *face;       /* the face each half-edge belongs to */
+    int *next, *prev; /* the following and preceding half-edge of the same loop */
+    int *twin;       /* the opposite half-edge, in the neighbouring face */
+    int *edge;       /* the edge it is a side of */
+    int *out_start;  /* nv+1: half-edges leaving v are out[out_start[v] ..) */
+    int *out, *out_head; /* ... and the vertices they lead to */
+} HalfEdges;
+
+static int h_head(const vrPolyhedron *p, const HalfEdges *he, int h) { return p->face_vert[he->next[h]]; }
+
+static void halfedges_free(HalfEdges *he)
+{
+    free(he->face);
+    free(he->next);
+    free(he->prev);
+    free(he->twin);
+    free(he->edge);
+    free(he->out_start);
+    free(he->out);
+    free(he->out_head);
+}
+
+static int halfedges_alloc(HalfEdges *he, int nv, int nh)
+{
+    he->face = malloc(sizeof *he->face * nh);
+    he->next = malloc(sizeof *he->next * nh);
+    he->prev = malloc(sizeof *he->prev * nh);
+    he->twin = malloc(sizeof *he->twin * nh);
+    he->edge = malloc(sizeof *he->edge * nh);
+    he->out_start = calloc(nv + 2, sizeof *he->out_start);
+    he->out = malloc(sizeof *he->out * nh);
+    he->out_head = malloc(sizeof *he->out_head * nh);
+    return he->face && he->next && he->prev && he->twin && he->edge && he->out_start && he->out && he->out_head
+         ? 0 : -1;
+}
+
+/* links each loop and buckets the half-edges by their tail vertex */
+static void bucket_by_tail(const vrPolyhedron *p, HalfEdges *he, int nh)
+{
+    int f, h, v;
+    for (f = 0; f < p->nf; f++)
+        for (h = p->face_start[f]; h < p->face_start[f + 1]; h++) {
+            he->face[h] = f;
+            he->next[h] = h + 1 < p->face_start[f + 1] ? h + 1 : p->face_start[f];
+            he->prev[h] = h > p->face_start[f] ? h - 1 : p->face_start[f + 1] - 1;
+        }
+    for (h = 0; h < nh; h++) he->out_start[p->face_vert[h] + 2]++;
+    for (v = 0; v < p->nv; v++) he->out_start[v + 2] += he->out_start[v + 1];
+    for (h = 0; h < nh; h++) {
+        int k = he->out_start[p->face_vert[h] + 1]++;
+        he->out[k] = h;
+        he->out_head[k] = h_head(p, he, h);
+    }
+}
+
+/* pairs every half-edge a->b with the only b->a; numbers the edges */
+static int match_twins(vrPolyhedron *p, HalfEdges *he, int nh, char *err, size_t errlen)
+{
+    int h, k, ne = 0;
+    for (h = 0; h < nh; h++) {
+        int a = p->face_vert[h], b = h_head(p, he, h), found = 0;
+        for (k = he->out_start[b]; k < he->out_start[b + 1]; k++)
+            if (he->out_head[k] == a) {
+                he->twin[h] = he->out[k];
+                found++;
+            }
+        if (found != 1)
+            return vrGeom_Fail(err, errlen, "edge %d-%d of face %d is in %d other faces (not a closed surface)",
+                               a, b, he->face[h], found);
+    }
+    for (h = 0; h < nh; h++) {
+        if (he->twin[h] < h) continue;
+        /* the left face is the one whose loop runs tail -> head */
+        p->edge_v[ne][0] = p->face_vert[h];
+        p->edge_v[ne][1] = h_head(p, he, h);
+        p->edge_f[ne][0] = he->face[h];
+        p->edge_f[ne][1] = he->face[he->twin[h]];
+        he->edge[h] = he->edge[he->twin[h]] = ne;
+        p->face_edge[h] = p->face_edge[he->twin[h]] = ne;
+        ne++;
+    }
+    return 0;
+}
+
+/* The edges about each vertex, counter-clockwise seen from outside: from
+ * v->w in face F, the next is v->u where u->v precedes v->w in F's loop. */
+static int order_vertex_edges(vrPolyhedron *p, const HalfEdges *he, char *err, size_t errlen)
+{
+    int v;
+    for (v = 0; v < p->nv; v++) {
+        int start = he->out_start[v], deg = he->out_start[v + 1] - start, n = 0;
+        int h0 = he->out[start], h = h0;
+        p->vert_edge_start[v] = start;
+        do {
+            p->vert_edge[start + n++] = he->edge[h];
+            h = he->twin[he->prev[h]];
+        } while (h != h0 && n < deg);
+        if (h != h0 || n != deg)
+            return vrGeom_Fail(err, errlen, "the faces about vertex %d do not form one fan (not a manifold)", v);
+    }
+    p->vert_edge_start[p->nv] = he->out_start[p->nv];
+    return 0;
+}
+
+static int build_graph(vrPolyhedron *p, char *err, size_t errlen)
+{
+    HalfEdges he = {0};
+    int nh = p->face_start[p->nf], rc;
+    if (halfedges_alloc(&he, p->nv, nh) != 0) {
+        halfedges_free(&he);
+        return vrGeom_Fail(err, errlen, "out of memory");
+    }
+    bucket_by_tail(p, &he, nh);
+    rc = match_twins(p, &he, nh, err, errlen);
+    if (rc == 0) rc = order_vertex_edges(p, &he, err, errlen);
+    if (rc == 0 && p->nv - p->ne + p->nf != 2)
+        rc = vrGeom_Fail(err, errlen, "V - E + F = %d, not 2 (not a sphere-like surface)", p->nv - p->ne + p->nf);
+    halfedges_free(&he);
+    return rc;
+}
+
+/* ---- planes, normals, checks --------------------------------------------- */
+
+/* Newell's normal of a loop (about its centroid, against cancellation):
+ * twice the area times the unit normal */
+static vec3 loop_area_normal(const vrPolyhedron *p, int f)
+{
+    int s = p->face_start[f], e = p->face_start[f + 1], k;
+    vec3 c = vec3_zero(), n = vec3_zero();
+    for (k = s; k < e; k++) c = vec3_add(c, p->vert[p->face_vert[k]]);
+    c = vec3_scale(c, 1.0 / (e - s));
+    for (k = s; k < e; k++) {
+        vec3 a = vec3_sub(p->vert[p->face_vert[k]], c);
+        vec3 b = vec3_sub(p->vert[p->face_vert[k + 1 < e ? k + 1 : s]], c);
+        n = vec3_add(n, vec3_cross(a, b));
+    }
+    return n;
+}
+
+static int compute_planes(vrPolyhedron *p, char *err, size_t errlen)
+{
+    int f, k, v;
+    for (f = 0; f < p->nf; f++) {
+        vec3 an = loop_area_normal(p, f);
+        double sum = 0;
+        if (!(vec3_len(an) > 0)) return vrGeom_Fail(err, errlen, "face %d has no area", f);
+        p->face_normal[f] = vec3_normalize(an);
+        for (k = p->face_start[f]; k < p->face_start[f + 1]; k++) {
+            sum += vec3_dot(p->face_normal[f], p->vert[p->face_vert[k]]);
+            /* smooth normals for drawing: incident face normals, area weighted */
+            v = p->face_vert[k];
+            p->vert_normal[v] = vec3_add(p->vert_normal[v], an);
+        }
+        p->face_offset[f] = sum / vrPolyhedron_FaceSize(p, f);
+        if (!(p->face_offset[f] > 0))
+            return vrGeom_Fail(err, errlen, "face %d does not face away from the centre (flat or inside-out)", f);
+    }
+    for (v = 0; v < p->nv; v++) p->vert_normal[v] = vec3_normalize(p->vert_normal[v]);
+    return 0;
+}
+
+/* signed distance of vertex v above the plane of face f */
+static double above(const vrPolyhedron *p, int f, int v)
+{
+    return vec3_dot(p->face_normal[f], p->vert[v]) - p->face_offset[f];
+}
+
+/* each face planar and convex in its plane, and the surface convex at each
+ * edge (the corner after the edge behind the neighbour's plane): the local
+ * conditions that make a closed surface of genus 0 convex */
+static int check_convex(const vrPolyhedron *p, double lim, char *err, size_t errlen)
+{
+    int f, k;
+    for (f = 0; f < p->nf; f++) {
+        int s = p->face_start[f], n = vrPolyhedron_FaceSize(p, f);
+        for (k = 0; k < n; k++) {
+            int e = p->face_edge[s + k], g = p->edge_f[e][0] == f ? p->edge_f[e][1] : p->edge_f[e][0];
+            int k1 = k + 1 < n ? k + 1 : 0, k2 = k1 + 1 < n ? k1 + 1 : 0, c = p->face_vert[s + k2];
+            vec3 va = p->vert[p->face_vert[s + k]], vb = p->vert[p->face_vert[s + k1]];
+            double len = vec3_dist(va, vb);
+            double left = len > 0 ? vec3_dot(vec3_cross(vec3_sub(vb, va), vec3_sub(p->vert[c], vb)),
+                                             p->face_normal[f]) / len : -INFINITY;
+            if (fabs(above(p, f, p->face_vert[s + k])) > lim)
+                return vrGeom_Fail(err, errlen, "face %d is not planar", f);
+            if (left < -lim) return vrGeom_Fail(err, errlen, "face %d is not convex", f);
+            if (above(p, g, c) > lim)
+                return vrGeom_Fail(err, errlen, "the surface is not convex between faces %d and %d", f, g);
+        }
+    }
+    return 0;
+}
+
+static int check_loops(int nv, const int *face_start, const int *face_vert, int nf, char *err, size_t errlen)
+{
+    int f, k, v, rc = 0;
+    char *used;
+    if (nv < 4 || nf < 4) return vrGeom_Fail(err, errlen, "a polyhedron needs at least 4 vertices and 4 faces");
+    used = calloc(nv, 1);
+    if (!used) return vrGeom_Fail(err, errlen, "out of memory");
+    for (f = 0; f < nf && rc == 0; f++) {
+        if (face_start[f + 1] - face_start[f] < 3) rc = vrGeom_Fail(err, errlen, "face %d has fewer than 3 vertices", f);
+        for (k = face_start[f]; k < face_start[f + 1] && rc == 0; k++) {
+            if (face_vert[k] < 0 || face_vert[k] >= nv)
+                rc = vrGeom_Fail(err, errlen, "face %d: vertex index %d out of range", f, face_vert[k]);
+            else
+                used[face_vert[k]] = 1;
+        }
+    }
+    for (v = 0; v < nv && rc == 0; v++)
+        if (!used[v]) rc = vrGeom_Fail(err, errlen, "vertex %d is in no face", v);
+    free(used);
+    return rc;
+}
+
+/* moves the centre of mass to the origin (SPEC 2: the body frame) */
+static int centre(vrPolyhedron *p, char *err, size_t errlen)
+{
+    double volume;
+    vec3 c;
+    int v;
+    vrMass_VolumeCentroid(p, &volume, &c);
+    if (!(volume > 0) || !vec3_isfinite(c))
+        return vrGeom_Fail(err, errlen, "the faces enclose no volume (flat, or oriented inward)");
+    for (v = 0; v < p->nv; v++) p->vert[v] = vec3_sub(p->vert[v], c);
+    p->shift = c;
+    return 0;
+}
+
+/* recentre = 0 for shapes whose centroid is the origin by symmetry: the
+ * computed one would only add rounding to every vertex */
+static int from_faces(const vec3 *vert, int nv, const int *face_start, const int *face_vert, int nf, double tol,
+                      int recentre, vrPolyhedron **out, char *err, size_t errlen)
+{
+    vrPolyhedron *p;
+    int nh;
+    *out = NULL;
+    if (check_loops(nv, face_start, face_vert, nf, err, errlen) != 0) return -1;
+    nh = face_start[nf];
+    if (nh % 2 != 0) return vrGeom_Fail(err, errlen, "odd number of face sides (not a closed surface)");
+    p = poly_alloc(nv, nf, nh);
+    if (!p) return vrGeom_Fail(err, errlen, "out of memory");
+    memcpy(p->vert, vert, sizeof *vert * nv);
+    memcpy(p->face_start, face_start, sizeof *face_start * (nf + 1));
+    memcpy(p->face_vert, face_vert, sizeof *face_vert * nh);
+    if (build_graph(p, err, errlen) != 0 || (recentre && centre(p, err, errlen) != 0) || compute_planes(p, err, errlen) != 0
+        || check_convex(p, 4 * tol * vrGeom_Size(p->vert, nv), err, errlen) != 0) {
+        vrPolyhedron_Free(p);
+        return -1;
+    }
+    vrMass_Compute(p);
+    *out = p;
+    return 0;
+}
+
+int vrPolyhedron_FromFaces(const vec3 *vert, int nv, const int *face_start, const int *face_vert, int nf,
+                           double tol, vrPolyhedron **out, char *err, size_t errlen)
+{
+    return from_faces(vert, nv, face_start, face_vert, nf, tol, 1, out, err, errlen);
+}
+
+/* ---- cube ------------------------------------------------------------------ */
+
+int vrPolyhedron_Cube(vec3 half, vrPolyhedron **out, char *err, size_t errlen)
+{
+    /* vertex i has the sign of x from bit 0, y from bit 1, z from bit 2; each
+     * face counter-clockwise seen from outside: -x +x -y +y -z +z */
+    static const int start[7] = {0, 4, 8, 12, 16, 20, 24};
+    static const int loops[24] = {0, 4, 6, 2, 1, 3, 7, 5, 0, 1, 5, 4, 3, 2, 6, 7, 1, 0, 2, 3, 4, 5, 7, 6};
+    vec3 v[8];
+    int i;
+    *out = NULL;
+    if (!vec3_isfinite(half) || !(half.x > 0 && half.y > 0 && half.z > 0))
+        return vrGeom_Fail(err, errlen, "cube half-extents must be finite and > 0, got (%g, %g, %g)", half.x, half.y,
+                           half.z);
+    for (i = 0; i < 8; i++)
+        v[i] = vec3_make(i & 1 ? half.x : -half.x, i & 2 ? half.y : -half.y, i & 4 ? half.z : -half.z);
+    return from_faces(v, 8, start, loops, 6, VR_COPLANAR_TOL, 0, out, err, errlen);
+}
+
+/* ---- sphere and superquadric samples (SPEC 2) ------------------------------ */
+
+static int check_resolution(int ures, int vres, char *err, size_t errlen)
+{
+    if (ures < 3 || ures > 1000 || vres < 3 || vres > 1000)
+        return vrGeom_Fail(err, errlen, "ures and vres must be in 3..1000, got %d and %d", ures, vres);
+    return 0;
+}
+
+/* cos and sin of num*pi/den, exactly 0 and +-1 at multiples of pi/2; the
+ * angles of opposite num are exact negatives, so the samples are symmetric */
+static void angle_cos_sin(int num, int den, double *c, double *s)
+{
+    static const double qc[4] = {1, 0, -1, 0}, qs[4] = {0, 1, 0, -1};
+    if ((2 * num) % den == 0) {
+        int q = ((2 * num / den) % 4 + 4) % 4;
+        *c = qc[q];
+        *s = qs[q];
+        return;
+    }
+    *c = cos(num * VR_PI / den);
+    *s = sin(num * VR_PI / den);
+}
+
+/* Barr's signed power: sign(t) |t|^e, exact 0 at 0 */
+static double signed_pow(double t, double e) { return t == 0 || e == 1 ? t : copysign(pow(fabs(t), e), t); }
+
+/* 2 + (vres-1)*ures samples: the south pole, rings of ures points from
+ * eta = -pi/2 + pi/vres upwards, the north pole; omega from -pi in steps of
+ * 2 pi/ures.  x = a1 C(eta,e1) C(w,e2), y = a2 C(eta,e1) S(w,e2), z = a3 S(eta,e1). */
+static vec3 *latlong_samples(double e1, double e2, vec3 r, int ures, int vres)
+{
+    vec3 *pts = malloc(sizeof *pts * (2 + (size_t)(vres - 1) * ures));
+    int k, j, n = 0;
+    if (!pts) return NULL;
+    pts[n++] = vec3_make(0, 0, -r.z);
+    for (k = 1; k < vres; k++) {
+        double ce, se;
+        angle_cos_sin(2 * k - vres, 2 * vres, &ce, &se);
+        for (j = 0; j < ures; j++) {
+            double cw, sw, ring = signed_pow(ce, e1);
+            angle_cos_sin(2 * j - ures, ures, &cw, &sw);
+            pts[n++] = vec3_make(r.x * ring * signed_pow(cw, e2), r.y * ring * signed_pow(sw, e2),
+                                 r.z * signed_pow(se, e1));
+        }
+    }
+    pts[n] = vec3_make(0, 0, r.z);
+    return pts;
+}
+
+/* the sphere mesh's faces: triangle fans at the poles, quads between rings,
+ * counter-clockwise seen from outside (omega grows to the right) */
+static void latlong_loops(int ures, int vres, int *start, int *loop)
+{
+    int k, j, f = 0, n = 0, top = 1 + (vres - 1) * ures;
+#define RING(k, j) (1 + ((k) - 1) * ures + (j) % ures)
+    for (j = 0; j < ures; j++) {
+        start[f++] = n;
+        loop[n++] = 0;
+        loop[n++] = RING(1, j + 1);
+        loop[n++] = RING(1, j);
+    }
+    for (k = 1; k + 1 < vres; k++)
+        for (j = 0; j < ures; j++) {
+            start[f++] = n;
+            loop[n++] = RING(k, j);
+            loop[n++] = RING(k, j + 1);
+            loop[n++] = RING(k + 1, j + 1);
+            loop[n++] = RING(k + 1, j);
+        }
+    for (j = 0; j < ures; j++) {
+        start[f++] = n;
+        loop[n++] = RING(vres - 1, j);
+        loop[n++] = RING(vres - 1, j + 1);
+        loop[n++] = top;
+    }
+#undef RING
+    start[f] = n;
+}
+
+int vrPolyhedron_Sphere(double radius, int ures, int vres, vrPolyhedron **out, char *err, size_t errlen)
+{
+    int nf = ures * vres, rc, v;
+    vec3 *pts;
+    int *start, *loop;
+    *out = NULL;
+    if (!(radius > 0) || !isfinite(radius))
+        return vrGeom_Fail(err, errlen, "sphere radius must be finite and > 0, got %g", radius);
+    if (check_resolution(ures, vres, err, errlen) != 0) return -1;
+    pts = latlong_samples(1, 1, vec3_make(radius, radius, radius), ures, vres);
+    start = malloc(sizeof *start * (nf + 1));
+    loop = malloc(sizeof *loop * 4 * nf);
+    if (!pts || !start || !loop) {
+        rc = vrGeom_Fail(err, errlen, "out of memory");
+    } else {
+        latlong_loops(ures, vres, start, loop);
+        /* symmetric under z -> -z and a turn of 2 pi/ures about z: centred */
+        rc = from_faces(pts, 2 + (vres - 1) * ures, start, loop, nf, VR_COPLANAR_TOL, 0, out, err, errlen);
+    }
+    if (rc == 0) /* drawn as the sphere it stands for */
+        for (v = 0; v < (*out)->nv; v++) (*out)->vert_normal[v] = vec3_normalize((*out)->vert[v]);
+    free(pts);
+    free(start);
+    free(loop);
+    return rc;
+}
+
+/* Smooth normals are the area-weighted face normals of the hull (merged
+ * flats then shade flat), not Barr's analytic normal, which is singular
+ * where the exponents make edges. */
+int vrPolyhedron_Superquadric(double exp1, double exp2, vec3 radii, int ures, int vres, vrPolyhedron **out,
+                              char *err, size_t errlen)
+{
+    vec3 *pts;
+    int rc;
+    *out = NULL;
+    if (!(exp1 >= 0.05 && exp1 <= 2 && exp2 >= 0.05 && exp2 <= 2))
+        return vrGeom_Fail(err, errlen, "superquadric exponents must be in 0.05..2, got %g and %g", exp1, exp2);
+    if (!vec3_isfinite(radii) || !(radii.x > 0 && radii.y > 0 && radii.z > 0))
+        return vrGeom_Fail(err, errlen, "superquadric radii must be finite and > 0, got (%g, %g, %g)", radii.x,
+                           radii.y, radii.z);
+    if (check_resolution(ures, vres, err, errlen) != 0) return -1;
+    pts = latlong_samples(exp1, exp2, radii, ures, vres);
+    if (!pts) return vrGeom_Fail(err, errlen, "out of memory");
+    rc = vrPolyhedron_Hull(pts, 2 + (vres - 1) * ures, out, err, errlen);
+    free(pts);
+    return rc;
+}
