@@ -150,8 +150,11 @@ typedef struct vrStats {
     /* with workers */
     int gps;
     long long messages;
-    long long copies;
-    long long gp_checks[64];
+    long long copies;             /* object instances over all workers */
+    long long gp_checks[64];      /* per worker */
+    long long gp_copies[64];      /* objects per worker (thesis table 5.5) */
+    long long gp_pairs[64];       /* pairs per worker */
+    long long foreign, malformed; /* messages ignored: other runs', undecodable */
 } vrStats;
 void vrWorld_GetStats(const vrWorld *w, vrStats *st);
 /* the renderer reports its time here so that `stats` can show render_ms */

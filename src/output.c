@@ -61,11 +61,18 @@ int vrWorld_WriteDump(const vrWorld *w, FILE *out)
     return ferror(out) ? -1 : 0;
 }
 
+/* " key=a/b/c", one number per worker */
+static void put_list(FILE *out, const char *key, const long long *v, int n)
+{
+    int i;
+    fprintf(out, " %s=", key);
+    for (i = 0; i < n && i < 64; i++) fprintf(out, "%s%lld", i ? "/" : "", v[i]);
+}
+
 int vrWorld_WriteStats(const vrWorld *w, FILE *out)
 {
     vrStats s;
     char e[32], t[32];
-    int i;
     vrWorld_GetStats(w, &s);
     vrFormatDouble(e, s.energy);
     vrFormatDouble(t, s.time);
@@ -76,8 +83,11 @@ int vrWorld_WriteStats(const vrWorld *w, FILE *out)
             s.checks, s.heap_pops, s.collisions, s.klu_solves, s.klu_refactors, s.klu_factors, e,
             s.frame_ms, s.sim_ms, s.render_ms);
     if (s.gps > 0) {
-        fprintf(out, " gps=%d messages=%lld copies=%lld gp_checks=", s.gps, s.messages, s.copies);
-        for (i = 0; i < s.gps && i < 64; i++) fprintf(out, "%s%lld", i ? "/" : "", s.gp_checks[i]);
+        fprintf(out, " gps=%d messages=%lld copies=%lld", s.gps, s.messages, s.copies);
+        put_list(out, "gp_checks", s.gp_checks, s.gps);
+        put_list(out, "gp_copies", s.gp_copies, s.gps);
+        put_list(out, "gp_pairs", s.gp_pairs, s.gps);
+        fprintf(out, " foreign=%lld malformed=%lld", s.foreign, s.malformed);
     }
     fputc('\n', out);
     return ferror(out) ? -1 : 0;

@@ -50,7 +50,7 @@ typedef struct vrGpInfo {
     long long order;
     int kind;
     long long checks, heap_pops, solves, refactors, factors;
-    int copies;
+    int copies, pairs;
     vrBuf setup;                /* its setup during a setup round */
 } vrGpInfo;
 
@@ -71,7 +71,7 @@ struct vrSgp {
     int frame_open;
     vrUpdate snap, snap_pending;   /* the frame start, to redo the frame */
     long long snap_collisions;
-    long long received, foreign, malformed;
+    long long requests, received, foreign, malformed;
     lcm_subscription_t *subs[3];
 };
 
@@ -202,8 +202,11 @@ static void resend(vrSgp *s)
             vrLink_Publish(&s->link, VR_CH_SETUP, s->gp[i].setup.data, s->gp[i].setup.len);
 }
 
+/* sends the request once; messages counts requests and first answers, not
+ * resends or duplicates, so that it depends on the run, not on timing */
 static void send_request(vrSgp *s)
 {
+    s->requests += s->setup_round ? alive_count(s) : 1;
     if (s->setup_round) resend(s);
     else vrLink_Publish(&s->link, s->req_channel, s->req.data, s->req.len);
 }
@@ -274,49 +277,58 @@ static int groups_for(int workers, int objects)
     return m;
 }
 
+static int block_of(int g1, int g2, int m) { return g1 * m - g1 * (g1 - 1) / 2 + (g2 - g1); }
+
+/* Greedy, biggest block first: among the workers that can take the block
+ * without going past a fair share (+20 %), the one it adds fewest new
+ * groups to, then the least loaded; if none can, the least loaded.  For the
+ * thesis's example this is its figure 6.3: 4 objects and 5 pairs each. */
+static void assign_blocks(const long long *size, int m, int nalive, int *owner)
+{
+    long long total = 0, cap, load[MAX_GPS] = {0};
+    char uses[MAX_GPS][MAX_GPS * 2] = {{0}};
+    int blocks = m * (m + 1) / 2, b, k, g1, g2;
+    for (b = 0; b < blocks; b++) {
+        total += size[b];
+        owner[b] = -1;
+    }
+    cap = (total * 12 + nalive * 10 - 1) / (nalive * 10);
+    for (;;) {
+        int best = -1, bg1 = 0, bg2 = 0, who = -1, wc = 0;
+        for (g1 = 0; g1 < m; g1++)
+            for (g2 = g1; g2 < m; g2++) {
+                b = block_of(g1, g2, m);
+                if (owner[b] < 0 && (best < 0 || size[b] > size[best])) { best = b; bg1 = g1; bg2 = g2; }
+            }
+        if (best < 0) return;
+        for (k = 0; k < nalive; k++) {
+            int c = !uses[k][bg1] + (bg2 != bg1 && !uses[k][bg2]);
+            if (load[k] + size[best] > cap) continue;
+            if (who < 0 || c < wc || (c == wc && load[k] < load[who])) { who = k; wc = c; }
+        }
+        for (k = 0; who < 0 && k < nalive; k++)
+            if (who < 0 || load[k] < load[who]) who = k;
+        if (who < 0) who = 0;
+        owner[best] = who;
+        load[who] += size[best];
+        uses[who][bg1] = uses[who][bg2] = 1;
+    }
+}
+
 static void deal_improved(const vrWorld *w, const int *alive, int nalive, int *pair_i, int *pair_j, vrDeal *d)
 {
-    int m = groups_for(nalive, w->nobj), blocks = m * (m + 1) / 2, g1, g2, k, b;
-    long long *load = calloc((size_t)nalive, sizeof *load), *size = calloc((size_t)blocks, sizeof *size);
-    int *owner = malloc((size_t)blocks * sizeof *owner), *uses = calloc((size_t)nalive * (size_t)m, sizeof *uses);
-    int per = (w->nobj + m - 1) / m;
-    if (!load || !size || !owner || !uses) {
+    int m = groups_for(nalive, w->nobj), per = (w->nobj + m - 1) / m, k;
+    long long *size = calloc((size_t)(m * (m + 1) / 2), sizeof *size);
+    int *owner = malloc((size_t)(m * (m + 1) / 2) * sizeof *owner);
+    if (!size || !owner || m > 2 * MAX_GPS) {
         for (k = 0; k < d->npairs; k++) d->gp_of[k] = alive[k % nalive];
     } else {
-        for (k = 0; k < d->npairs; k++) {
-            g1 = pair_i[k] / per;
-            g2 = pair_j[k] / per;
-            size[g1 * m - g1 * (g1 - 1) / 2 + (g2 - g1)]++;
-        }
-        /* greedy, biggest block first: to the worker that adds fewest new
-         * groups, then the least loaded */
-        for (b = 0; b < blocks; b++) owner[b] = -1;
-        for (;;) {
-            int best = -1, bg1 = 0, bg2 = 0, who = 0, cost = 1 << 30;
-            for (g1 = 0, b = 0; g1 < m; g1++)
-                for (g2 = g1; g2 < m; g2++, b++)
-                    if (owner[b] < 0 && (best < 0 || size[b] > size[best])) { best = b; bg1 = g1; bg2 = g2; }
-            if (best < 0) break;
-            for (k = 0; k < nalive; k++) {
-                int c = !uses[k * m + bg1] + (bg2 != bg1 && !uses[k * m + bg2]);
-                long long l = load[k] + size[best];
-                int score = c * 1000000 + (int)(l > 999999 ? 999999 : l);
-                if (score < cost) { cost = score; who = k; }
-            }
-            owner[best] = who;
-            load[who] += size[best];
-            uses[who * m + bg1] = uses[who * m + bg2] = 1;
-        }
-        for (k = 0; k < d->npairs; k++) {
-            g1 = pair_i[k] / per;
-            g2 = pair_j[k] / per;
-            d->gp_of[k] = alive[owner[g1 * m - g1 * (g1 - 1) / 2 + (g2 - g1)]];
-        }
+        for (k = 0; k < d->npairs; k++) size[block_of(pair_i[k] / per, pair_j[k] / per, m)]++;
+        assign_blocks(size, m, nalive, owner);
+        for (k = 0; k < d->npairs; k++) d->gp_of[k] = alive[owner[block_of(pair_i[k] / per, pair_j[k] / per, m)]];
     }
-    free(load);
     free(size);
     free(owner);
-    free(uses);
 }
 
 static int deal(const vrWorld *w, const vrSgp *s, int **pi, int **pj, vrDeal *d)
@@ -390,6 +402,7 @@ static int encode_setup(vrWorld *w, vrSgp *s, int g, const int *pi, const int *p
                 if (anchor_of(&states, &w->obj[i]->body) != 0) break;
             }
         if (i == w->nobj && vrWire_PutStates(&ws, &states) == 0) {
+            s->gp[g].pairs = m.npairs;
             m.run = s->run;
             m.seq = s->seq;
             m.nonce = s->gp[g].nonce;
@@ -775,10 +788,14 @@ void vrSgp_Stats(const vrSgp *s, vrStats *st)
 {
     int i;
     st->gps = s->n;
-    st->messages = s->link.sent + s->received;
+    st->messages = s->requests + s->received;
+    st->foreign = s->foreign;
+    st->malformed = s->malformed;
     for (i = 0; i < s->n && i < 64; i++) {
         const vrGpInfo *g = &s->gp[i];
         st->gp_checks[i] = g->checks;
+        st->gp_copies[i] = g->alive ? g->copies : 0;
+        st->gp_pairs[i] = g->alive ? g->pairs : 0;
         st->checks += g->checks;
         st->heap_pops += g->heap_pops;
         st->klu_solves += g->solves;

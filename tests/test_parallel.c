@@ -1,0 +1,313 @@
+/* test_parallel.c — GPs over LCM (SPEC 5): the same bits as the serial run
+ * with 1, 2, 3 and 8 workers and both distributions, in one process
+ * (memq://) and in forked processes over UDP multicast; and the same bits
+ * through lost, duplicated, foreign and malformed messages and a worker
+ * killed mid-run.
+ *
+ * UDP multicast runs only inside a private network namespace (nothing may
+ * leave the machine): main() re-executes itself under `unshare -n` with a
+ * multicast route on lo, and fails — never skips — when it cannot. */
+#define _DEFAULT_SOURCE
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include "test.h"
+#include <lcm/lcm.h>
+#include <time.h>
+#include "vroc.h"
+
+#define UDPM "udpm://239.255.76.67:7667?ttl=0"
+
+typedef struct { unsigned long long hash; vrStats stats; char err[512]; int failed; double ms; } vrRun;
+
+static unsigned long long fnv(const char *s, size_t n)
+{
+    unsigned long long h = 1469598103934665603ULL;
+    size_t i;
+    for (i = 0; i < n; i++) h = (h ^ (unsigned char)s[i]) * 1099511628211ULL;
+    return h;
+}
+
+typedef void (*vrScene)(vrWorld *w);
+
+static void random_60(vrWorld *w)
+{
+    vrSettings s = *vrWorld_Settings(w);
+    s.room = 5;
+    s.seed = 60;
+    s.collision_dist = 0.01;
+    s.time_step = 0.05;
+    s.force_mag = 9.8;
+    s.max_linear = 16;
+    s.max_angular = 100;
+    vrWorld_SetSettings(w, &s, NULL, 0);
+    vrWorld_AddRandom(w, 60, NULL, 0);
+}
+
+/* the hash of the dump after `frames` frames with `gps` workers */
+static vrRun run(vrScene scene, int gps, const char *url, vrDistribution dist, long frames)
+{
+    vrRun r;
+    vrWorld *w = vrWorld_Create();
+    vrSettings s;
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f;
+    memset(&r, 0, sizeof r);
+    scene(w);
+    s = *vrWorld_Settings(w);
+    s.gps = gps;
+    s.distribution = dist;
+    snprintf(s.lcm_url, sizeof s.lcm_url, "%s", url);
+    vrWorld_SetSettings(w, &s, NULL, 0);
+    r.failed = vrWorld_Step(w, frames, r.err, sizeof r.err) != 0;
+    vrWorld_GetStats(w, &r.stats);
+    f = open_memstream(&buf, &len);
+    vrWorld_WriteDump(w, f);
+    fclose(f);
+    r.hash = fnv(buf, len);
+    free(buf);
+    vrWorld_Destroy(w);
+    return r;
+}
+
+static vrRun serial_60;
+
+static int same_as_serial(vrRun r, const char *what)
+{
+    ENSURE_MSG(!r.failed, "%s: %s", what, r.err);
+    ENSURE_MSG(r.hash == serial_60.hash, "%s: hash %016llx, serial %016llx", what, r.hash, serial_60.hash);
+    return 0;
+}
+
+/* ---- determinism ------------------------------------------------------------ */
+
+static int test_in_process_workers_match_serial_bit_for_bit(void)
+{
+    int n[] = {1, 2, 3, 8}, i, d;
+    for (d = 0; d < 2; d++)
+        for (i = 0; i < 4; i++) {
+            char what[64];
+            vrRun r = run(random_60, n[i], "memq://", (vrDistribution)d, 200);
+            snprintf(what, sizeof what, "%d workers, %s", n[i], d ? "improved" : "round robin");
+            if (same_as_serial(r, what)) return 1;
+            ENSURE(r.stats.gps == n[i]);
+        }
+    return 0;
+}
+
+static int test_forked_workers_over_udp_match_serial(void)
+{
+    int n[] = {1, 2, 3, 8}, i;
+    for (i = 0; i < 4; i++) {
+        char what[64];
+        vrRun r = run(random_60, n[i], UDPM, i % 2 ? VR_DIST_IMPROVED : VR_DIST_ROUND_ROBIN, 200);
+        snprintf(what, sizeof what, "%d forked workers", n[i]);
+        if (same_as_serial(r, what)) return 1;
+        printf("    %d workers: %lld messages, %lld copies\n", n[i], r.stats.messages, r.stats.copies);
+    }
+    return 0;
+}
+
+/* ---- faults ---------------------------------------------------------------------- */
+
+static int test_lost_and_duplicated_messages_change_nothing(void)
+{
+    vrRun r;
+    setenv("VROC_FAULT_DROP", "10", 1);
+    setenv("VROC_FAULT_DUP", "10", 1);
+    r = run(random_60, 3, UDPM, VR_DIST_ROUND_ROBIN, 200);
+    unsetenv("VROC_FAULT_DROP");
+    unsetenv("VROC_FAULT_DUP");
+    return same_as_serial(r, "10% lost, 10% duplicated");
+}
+
+static int test_killed_worker_is_replaced_by_the_others(void)
+{
+    vrRun r;
+    setenv("VROC_FAULT_KILL", "1:40", 1);        /* worker 1 dies at its 40th frame */
+    r = run(random_60, 3, UDPM, VR_DIST_ROUND_ROBIN, 200);
+    unsetenv("VROC_FAULT_KILL");
+    if (same_as_serial(r, "worker 1 killed at frame 40")) return 1;
+    ENSURE(r.stats.gp_copies[1] == 0);            /* its pairs went to the others */
+    ENSURE(r.stats.gp_copies[0] > 0 && r.stats.gp_copies[2] > 0);
+    return 0;
+}
+
+static int test_silent_worker_in_process_is_replaced(void)
+{
+    vrRun r;
+    setenv("VROC_FAULT_KILL", "0:10", 1);
+    r = run(random_60, 2, "memq://", VR_DIST_IMPROVED, 200);
+    unsetenv("VROC_FAULT_KILL");
+    return same_as_serial(r, "worker 0 silent from frame 10");
+}
+
+static int test_no_worker_left_is_a_clear_error(void)
+{
+    vrRun r;
+    setenv("VROC_FAULT_KILL", "0:3", 1);
+    r = run(random_60, 1, UDPM, VR_DIST_ROUND_ROBIN, 20);
+    unsetenv("VROC_FAULT_KILL");
+    ENSURE(r.failed);
+    ENSURE_MSG(strstr(r.err, "workers died") != NULL, "message: %s", r.err);
+    return 0;
+}
+
+/* an intruder floods every channel with garbage and with well-formed
+ * messages of another run while the workers run */
+static pid_t start_intruder(void)
+{
+    pid_t pid = fork();
+    if (pid == 0) {
+        static const char *const ch[] = {"VROC_EARLIEST", "VROC_UPDATE", "VROC_HELLO", "VROC_FRAME",
+                                         "VROC_ADVANCE", "VROC_FORWARD", "VROC_SETUP"};
+        lcm_t *l = lcm_create(UDPM);
+        unsigned char junk[64];
+        unsigned k;
+        for (k = 0; l; k++) {
+            struct timespec pause = {0, 500000};
+            memset(junk, (int)k, sizeof junk);
+            junk[0] = (unsigned char)(k * 7);
+            lcm_publish(l, ch[k % 7], junk, 1 + k % sizeof junk);
+            nanosleep(&pause, NULL);
+        }
+        _exit(1);
+    }
+    return pid;
+}
+
+static int test_foreign_and_malformed_messages_are_ignored(void)
+{
+    pid_t intruder = start_intruder();
+    vrRun r;
+    int status;
+    r = run(random_60, 2, UDPM, VR_DIST_ROUND_ROBIN, 200);
+    kill(intruder, SIGKILL);
+    waitpid(intruder, &status, 0);
+    if (same_as_serial(r, "with an intruder")) return 1;
+    printf("    ignored %lld malformed, %lld foreign\n", r.stats.malformed, r.stats.foreign);
+    ENSURE(r.stats.malformed > 0);
+    return 0;
+}
+
+/* ---- distribution and messages ------------------------------------------------------ */
+
+static void six_objects(vrWorld *w)
+{
+    int i;
+    for (i = 0; i < 6; i++) {
+        vrObjectId id;
+        vrObjectDef d = vrObjectDef_Default(VR_SPHERE);
+        char name[8];
+        snprintf(name, sizeof name, "o%d", i);
+        d.radius = 0.1;
+        d.translate[0] = 2.0 * i;
+        vrWorld_CreateObject(w, name, VR_SPHERE, &id, NULL, 0);
+        vrWorld_SetObjectDef(w, id, &d, NULL, 0);
+    }
+}
+
+/* thesis 6.4: 6 objects, 15 pairs, 3 workers: no worker holds more than 4 */
+static int test_improved_distribution_meets_thesis_example(void)
+{
+    vrRun rr = run(six_objects, 3, "memq://", VR_DIST_ROUND_ROBIN, 1);
+    vrRun im = run(six_objects, 3, "memq://", VR_DIST_IMPROVED, 1);
+    int i;
+    long long pairs = 0;
+    for (i = 0; i < 3; i++) {
+        printf("    worker %d: round robin %lld objects, improved %lld objects / %lld pairs\n", i,
+               rr.stats.gp_copies[i], im.stats.gp_copies[i], im.stats.gp_pairs[i]);
+        ENSURE(im.stats.gp_copies[i] <= 4);
+        pairs += im.stats.gp_pairs[i];
+    }
+    ENSURE(pairs == 15);
+    ENSURE(im.stats.copies < rr.stats.copies);
+    return 0;
+}
+
+static int test_improved_distribution_needs_fewer_copies_on_random_60(void)
+{
+    vrRun rr = run(random_60, 3, "memq://", VR_DIST_ROUND_ROBIN, 1);
+    vrRun im = run(random_60, 3, "memq://", VR_DIST_IMPROVED, 1);
+    printf("    copies: round robin %lld, improved %lld\n", rr.stats.copies, im.stats.copies);
+    ENSURE(im.stats.copies < rr.stats.copies);
+    return 0;
+}
+
+static int n_apart;
+/* n spheres far apart drifting slowly: frames without events */
+static void drifting(vrWorld *w)
+{
+    int i;
+    for (i = 0; i < n_apart; i++) {
+        vrObjectId id;
+        vrObjectDef d = vrObjectDef_Default(VR_SPHERE);
+        char name[16];
+        snprintf(name, sizeof name, "s%d", i);
+        d.radius = 0.1;
+        d.translate[0] = 3.0 * (i % 20);
+        d.translate[1] = 3.0 * (i / 20);
+        d.linear_vel[2] = 0.1;
+        vrWorld_CreateObject(w, name, VR_SPHERE, &id, NULL, 0);
+        vrWorld_SetObjectDef(w, id, &d, NULL, 0);
+    }
+}
+
+/* the thesis 3.5.2: messages per frame depend on workers and events, not on objects */
+static int test_messages_do_not_grow_with_objects(void)
+{
+    vrRun small, big;
+    n_apart = 20;
+    small = run(drifting, 3, "memq://", VR_DIST_ROUND_ROBIN, 50);
+    n_apart = 200;
+    big = run(drifting, 3, "memq://", VR_DIST_ROUND_ROBIN, 50);
+    printf("    messages: %lld with 20 objects, %lld with 200\n", small.stats.messages, big.stats.messages);
+    ENSURE(!small.failed && !big.failed);
+    ENSURE(small.stats.collisions == 0 && big.stats.collisions == 0);
+    ENSURE(small.stats.messages == big.stats.messages);
+    return 0;
+}
+
+/* ---- the namespace ------------------------------------------------------------------------- */
+
+static void enter_namespace(int argc, char **argv)
+{
+    char *args[16];
+    int i, k = 0;
+    if (getenv("VROC_NETNS")) return;
+    args[k++] = "unshare";
+    args[k++] = "-n";
+    args[k++] = "sh";
+    args[k++] = "-c";
+    args[k++] = "ip link set lo up && ip link set lo multicast on && ip route add 224.0.0.0/4 dev lo "
+                "&& VROC_NETNS=1 exec \"$0\" \"$@\" "
+                "|| { echo 'FAIL cannot make a private network namespace (unshare -n needs root)'; "
+                "echo '0 passed, 1 failed'; exit 1; }";
+    for (i = 0; i < argc && k < 15; i++) args[k++] = argv[i];
+    args[k] = NULL;
+    execvp("unshare", args);
+    printf("FAIL cannot run unshare: UDP multicast tests need a private network namespace\n0 passed, 1 failed\n");
+    exit(1);
+}
+
+int main(int argc, char **argv)
+{
+    enter_namespace(argc, argv);
+    test_init(argc, argv);
+    serial_60 = run(random_60, 0, UDPM, VR_DIST_ROUND_ROBIN, 200);
+    printf("    serial: %lld collisions, hash %016llx\n", serial_60.stats.collisions, serial_60.hash);
+    RUN_TEST(test_in_process_workers_match_serial_bit_for_bit);
+    RUN_TEST(test_forked_workers_over_udp_match_serial);
+    RUN_TEST(test_lost_and_duplicated_messages_change_nothing);
+    RUN_TEST(test_killed_worker_is_replaced_by_the_others);
+    RUN_TEST(test_silent_worker_in_process_is_replaced);
+    RUN_TEST(test_no_worker_left_is_a_clear_error);
+    RUN_TEST(test_foreign_and_malformed_messages_are_ignored);
+    RUN_TEST(test_improved_distribution_meets_thesis_example);
+    RUN_TEST(test_improved_distribution_needs_fewer_copies_on_random_60);
+    RUN_TEST(test_messages_do_not_grow_with_objects);
+    return test_summary();
+}
