@@ -113,6 +113,10 @@ int vrWorld_SetSettings(vrWorld *w, const vrSettings *s, char *err, size_t n)
 {
     if (check_settings(s, err, n) != 0) return -1;
     if (physics_changed(&w->s, s)) w->params_dirty = 1;
+    if (s->time_step != w->s.time_step) {
+        w->t_base = w->t;
+        w->frames_base = w->frames;
+    }
     if (s->seed != w->s.seed) {
         w->s.seed = s->seed;
         vrRandom_Seed(w);
@@ -194,8 +198,8 @@ void vrWorld_Destroy(vrWorld *w)
 void vrWorld_Restart(vrWorld *w)
 {
     clear_objects(w);
-    w->t = 0;
-    w->frames = 0;
+    w->t = w->t_base = 0;
+    w->frames = w->frames_base = 0;
     w->subframes = 0;
     w->collisions = 0;
     w->frame_ms = w->sim_ms = w->render_ms = 0;
@@ -910,7 +914,7 @@ int vrWorld_DeleteObject(vrWorld *w, vrObjectId id)
 /* Runs [t, t + time_step]: ARCHITECTURE "the loop, once". */
 static int run_frame(vrWorld *w, char *err, size_t n)
 {
-    double T = w->t + w->s.time_step, ts = w->t, instant_t = -INFINITY;
+    double T = w->t_base + (double)(w->frames + 1 - w->frames_base) * w->s.time_step, ts = w->t, instant_t = -INFINITY;
     vrParams p = vrWorld_Params(w);
     int instant = 0;
     w->subframes = 0;

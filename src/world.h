@@ -34,6 +34,8 @@ struct vrWorld {
     int nobj, objcap;
     double t;
     long frames;
+    double t_base;           /* frame times are t_base + k time_step, k frames since */
+    long frames_base;        /* (summing time_step frame by frame would drift) */
     int started;             /* the pair set exists */
     int params_dirty;        /* settings changed: re-anchor all at the next frame */
     int check_overlaps;      /* objects were added or moved: check before the next frame */
