@@ -12,11 +12,15 @@
  *   a's face -> its normal;  else b's face -> minus its normal;
  *   edge x edge (not parallel) -> the cross product;
  *   otherwise the closest points of the two features.
- * The result is a pure function of (shapes, poses): the cache buys speed only.
+ * The result is a pure function of (shapes, poses): the cache buys speed
+ * only.  (Left to chance: a set member within rounding of the 1e-9 m
+ * threshold, and whether a contact within rounding of distance 0 counts as
+ * touching or overlapping.)
  *
  * Spheres collide as true spheres: closed forms against spheres and boxes
  * (thesis 3.2.1 [Glassner90]), the walk to the centre against any other
- * polyhedron.  Overlap goes to libccd (penetration.c).
+ * polyhedron; their depths are exact.  Overlapping polyhedra go to libccd
+ * (penetration.c).
  *
  * No static state; scratch memory lives on the stack unless a set outgrows
  * its inline buffer.

@@ -110,6 +110,13 @@ double vrClosest_Walk(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedro
 double vrClosest_WalkPoint(const vrPolyhedron *a, const vrPose *pa, vec3 point,
                            vrWalkCache *cache, vec3 *ca, int *steps);
 
+/* What the walks do when they hit their step cap (counted in
+ * cache->fallbacks): search every feature pair, O(E F); same results and
+ * cache update.  Exposed so that tests can check this rarely taken path. */
+double vrClosest_Exhaustive(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb,
+                            vrWalkCache *cache, vec3 *ca, vec3 *cb, int *penetrating);
+double vrClosest_ExhaustivePoint(const vrPolyhedron *a, const vrPose *pa, vec3 point, vrWalkCache *cache, vec3 *ca);
+
 /* Reference distance by brute force over all feature pairs (tests only):
  * 0 when the polyhedra touch or overlap. */
 double vrClosest_BruteForce(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb);

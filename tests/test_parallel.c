@@ -201,7 +201,7 @@ static void six_objects(vrWorld *w)
     for (i = 0; i < 6; i++) {
         vrObjectId id;
         vrObjectDef d = vrObjectDef_Default(VR_SPHERE);
-        char name[8];
+        char name[16];
         snprintf(name, sizeof name, "o%d", i);
         d.radius = 0.1;
         d.translate[0] = 2.0 * i;

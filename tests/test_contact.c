@@ -1,0 +1,609 @@
+/* test_contact.c — canonical distance, normal and contact region
+ * (contact.c, SPEC 2 and 3.2), true spheres, and penetration by libccd. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "contact.h"
+#include "test.h"
+
+/* ---- fixtures --------------------------------------------------------- */
+
+static unsigned long long seed = 0x2545F4914F6CDD1Dull;
+
+static double rnd01(void) /* xorshift64*, [0, 1) */
+{
+    seed ^= seed >> 12;
+    seed ^= seed << 25;
+    seed ^= seed >> 27;
+    return (double)((seed * 0x2545F4914F6CDD1Dull) >> 11) / 9007199254740992.0;
+}
+static double rnd(double lo, double hi) { return lo + (hi - lo) * rnd01(); }
+static vec3 rnd_unit(void)
+{
+    vec3 v;
+    do v = vec3_make(rnd(-1, 1), rnd(-1, 1), rnd(-1, 1));
+    while (vec3_len2(v) > 1 || vec3_len2(v) < 1e-4);
+    return vec3_normalize(v);
+}
+static quat rnd_rotation(void) { return quat_normalize(quat_make(rnd(-1, 1), rnd(-1, 1), rnd(-1, 1), rnd(-1, 1))); }
+
+static vrPose identity_at(double x, double y, double z) { return vrPose_make(vec3_make(x, y, z), quat_identity()); }
+
+typedef struct Fix { vrShape s; vrPolyhedron *own; } Fix;
+
+static int box(Fix *f, double hx, double hy, double hz)
+{
+    char err[128];
+    memset(f, 0, sizeof *f);
+    f->s.kind = VR_SHAPE_BOX;
+    f->s.half = vec3_make(hx, hy, hz);
+    if (vrPolyhedron_Cube(f->s.half, &f->own, err, sizeof err)) return -1;
+    f->s.poly = f->own;
+    return 0;
+}
+
+static int poly(Fix *f, int which)
+{
+    char err[128];
+    int rc;
+    memset(f, 0, sizeof *f);
+    f->s.kind = VR_SHAPE_POLY;
+    if (which == 0) rc = vrPolyhedron_Sphere(0.3, 10, 10, &f->own, err, sizeof err);
+    else if (which == 1) rc = vrPolyhedron_Superquadric(0.3, 0.3, vec3_make(0.3, 0.2, 0.25), 12, 12, &f->own, err, sizeof err);
+    else rc = vrPolyhedron_Superquadric(1, 1, vec3_make(0.25, 0.3, 0.2), 12, 12, &f->own, err, sizeof err);
+    f->s.poly = f->own;
+    return rc;
+}
+
+static void sphere(Fix *f, double r)
+{
+    memset(f, 0, sizeof *f);
+    f->s.kind = VR_SHAPE_SPHERE;
+    f->s.radius = r;
+}
+
+static void unfix(Fix *f) { vrPolyhedron_Free(f->own); }
+
+static double outer(const vrShape *s) { return s->kind == VR_SHAPE_SPHERE ? s->radius : s->poly->r_out; }
+
+static vrWalkCache start_cache(const vrShape *a, const vrShape *b, int random)
+{
+    vrWalkCache c;
+    memset(&c, 0, sizeof c);
+    if (random && a->poly && b->poly) {
+        const vrPolyhedron *p[2] = {a->poly, b->poly};
+        vrFeature *f[2] = {&c.a, &c.b};
+        int i;
+        for (i = 0; i < 2; i++) {
+            f[i]->type = (int)(rnd01() * 3);
+            f[i]->index = (int)(rnd01() * (f[i]->type == 0 ? p[i]->nv : f[i]->type == 1 ? p[i]->ne : p[i]->nf));
+        }
+        c.valid = 1;
+    }
+    return c;
+}
+
+static int same_bits(const void *x, const void *y, size_t n) { return memcmp(x, y, n) == 0; }
+
+/* dist, n, pa, pb and the region, to the bit */
+static int same_contact(const vrContact *x, const vrContact *y)
+{
+    return same_bits(&x->dist, &y->dist, sizeof x->dist) && same_bits(&x->n, &y->n, sizeof x->n)
+        && same_bits(&x->pa, &y->pa, sizeof x->pa) && same_bits(&x->pb, &y->pb, sizeof x->pb)
+        && x->npoints == y->npoints && same_bits(x->point, y->point, (size_t)x->npoints * sizeof x->point[0]);
+}
+
+/* Region from every start pair of features (or the empty cache for
+ * spheres): all results equal to the bit; returns the first in *first and
+ * prints how many different feature pairs the walk ended on. */
+static int region_from_every_start(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
+                                   double d, vrContact *first)
+{
+    vrFeature ends[64][2];
+    int ta, ia, tb, ib, count = 0, nends = 0, i;
+    int na[3] = {1, 1, 1}, nb[3] = {1, 1, 1};
+    vrContact c;
+    if (a->poly) na[0] = a->poly->nv, na[1] = a->poly->ne, na[2] = a->poly->nf;
+    if (b->poly) nb[0] = b->poly->nv, nb[1] = b->poly->ne, nb[2] = b->poly->nf;
+    for (ta = 0; ta < 3; ta++)
+        for (ia = 0; ia < na[ta]; ia++)
+            for (tb = 0; tb < 3; tb++)
+                for (ib = 0; ib < nb[tb]; ib++) {
+                    vrWalkCache w;
+                    memset(&w, 0, sizeof w);
+                    w.a.type = ta, w.a.index = ia, w.b.type = tb, w.b.index = ib, w.valid = 1;
+                    if (b->kind == VR_SHAPE_SPHERE) w.b.type = w.b.index = 0;
+                    ENSURE(vrContact_Region(a, pa, b, pb, d, &w, count ? &c : first) == 0);
+                    ENSURE(w.fallbacks == 0);
+                    ENSURE_MSG(count == 0 || same_contact(first, &c),
+                               "start %d/%d %d/%d: dist %.17g vs %.17g, n (%.17g %.17g %.17g), %d vs %d points", ta,
+                               ia, tb, ib, c.dist, first->dist, c.n.x, c.n.y, c.n.z, c.npoints, first->npoints);
+                    count++;
+                    for (i = 0; i < nends; i++)
+                        if (!memcmp(&ends[i][0], &w.a, sizeof w.a) && !memcmp(&ends[i][1], &w.b, sizeof w.b)) break;
+                    if (i == nends && nends < 64) ends[nends][0] = w.a, ends[nends++][1] = w.b;
+                }
+    printf("    %d starts ended on %d feature pairs, %d region points\n", count, nends, first->npoints);
+    return 0;
+}
+
+/* each expected point is in the region (1e-12), and nothing else */
+static int region_is(const vrContact *c, const vec3 *expect, int n)
+{
+    int i, j;
+    ENSURE_MSG(c->npoints == n, "%d points, expected %d", c->npoints, n);
+    for (i = 0; i < n; i++) {
+        int found = 0;
+        for (j = 0; j < n; j++) found |= vec3_dist(c->point[j], expect[i]) <= 1e-12;
+        ENSURE_MSG(found, "(%.17g %.17g %.17g) missing", expect[i].x, expect[i].y, expect[i].z);
+    }
+    return 0;
+}
+
+/* ---- canonical distance ------------------------------------------------ */
+
+/* vrContact_Distance equals brute force on 10,000 random separated poses of boxes
+ * and polyhedra, and gives the same bits from the previous, a random and the
+ * empty cache: the cache buys speed only (SPEC 3.2). */
+static int test_distance_is_brute_force_distance_and_independent_of_cache(void)
+{
+    Fix f[5];
+    int i, j, k, n = 0;
+    ENSURE(box(&f[0], 0.25, 0.25, 0.25) == 0 && box(&f[1], 0.4, 0.15, 0.05) == 0);
+    ENSURE(poly(&f[2], 0) == 0 && poly(&f[3], 1) == 0 && poly(&f[4], 2) == 0);
+    for (i = 0; i < 5; i++)
+        for (j = i; j < 5; j++) {
+            vrWalkCache warm;
+            memset(&warm, 0, sizeof warm);
+            for (k = 0; k < 1150; k++) {
+                const vrShape *a = &f[i].s, *b = &f[j].s;
+                vrPose pa = vrPose_make(rnd_unit(), rnd_rotation()), pb;
+                vrWalkCache rc = start_cache(a, b, 1), zc = start_cache(a, b, 0);
+                vrContact c0, c1, c2;
+                double bf;
+                pb = vrPose_make(vec3_madd(pa.p, (outer(a) + outer(b)) * rnd(0.5, 1.2), rnd_unit()), rnd_rotation());
+                bf = vrClosest_BruteForce(a->poly, &pa, b->poly, &pb);
+                if (bf < 1e-6) continue;
+                n++;
+                ENSURE(vrContact_Distance(a, &pa, b, &pb, &warm, &c0) == 0);
+                ENSURE(vrContact_Distance(a, &pa, b, &pb, &rc, &c1) == 0);
+                ENSURE(vrContact_Distance(a, &pa, b, &pb, &zc, &c2) == 0);
+                ENSURE_NEAR(c0.dist, bf, 1e-9 * (bf > 1 ? bf : 1));
+                ENSURE_NEAR(vec3_len(c0.n), 1, 1e-12);
+                ENSURE_NEAR(vec3_dot(c0.n, vec3_sub(c0.pb, c0.pa)), c0.dist, 1e-9);
+                ENSURE(c0.npoints == 0);
+                ENSURE_MSG(same_contact(&c0, &c1) && same_contact(&c0, &c2), "pair %d-%d pose %d", i, j, k);
+                if (k % 8 == 0) { /* Region: the same numbers, and a region */
+                    ENSURE(vrContact_Region(a, &pa, b, &pb, c0.dist + 0.01, &zc, &c1) == 0);
+                    ENSURE(c1.npoints >= 1);
+                    c1.npoints = 0;
+                    ENSURE(same_contact(&c0, &c1));
+                }
+            }
+        }
+    printf("    %d separated pairs, 3 caches each\n", n);
+    for (i = 0; i < 5; i++) unfix(&f[i]);
+    ENSURE(n >= 10000);
+    return 0;
+}
+
+/* Parallel faces, stacked cubes, parallel and crossed edges, a pole over a
+ * face: Region gives the same bits from every start pair of features. */
+static int test_region_is_bit_identical_from_every_start_cache(void)
+{
+    Fix table, cube, mesh, ball;
+    vrContact c;
+    quat q45x = quat_from_axis_angle(vec3_make(1, 0, 0), VR_PI / 4);
+    quat q90z = quat_from_axis_angle(vec3_make(0, 0, 1), VR_PI / 2);
+    vrPose at0 = identity_at(0, 0, 0), pb, pa;
+    double r2 = 0.25 * sqrt(2.0);
+    int rc = 1;
+    ENSURE(box(&table, 1, 0.5, 0.025) == 0 && box(&cube, 0.25, 0.25, 0.25) == 0 && poly(&mesh, 0) == 0);
+    sphere(&ball, 0.1);
+    pb = identity_at(0.3, 0.1, 0.025 + 0.25 + 0.005);
+    if (region_from_every_start(&table.s, &at0, &cube.s, &pb, 0.01, &c)) goto out;
+    pb = identity_at(0.9, 0.1, 0.025 + 0.25 + 0.005); /* overhanging */
+    if (region_from_every_start(&table.s, &at0, &cube.s, &pb, 0.01, &c)) goto out;
+    pb = identity_at(0, 0, 0.5 + 0.005); /* equal cubes stacked */
+    if (region_from_every_start(&cube.s, &at0, &cube.s, &pb, 0.01, &c)) goto out;
+    pa = vrPose_make(vec3_zero(), q45x); /* parallel edges */
+    pb = vrPose_make(vec3_make(0.1, 0, 2 * r2 + 0.005), q45x);
+    if (region_from_every_start(&cube.s, &pa, &cube.s, &pb, 0.01, &c)) goto out;
+    pb = vrPose_make(vec3_make(0, 0, 2 * r2 + 0.005), quat_mul(q90z, q45x)); /* crossed edges */
+    if (region_from_every_start(&cube.s, &pa, &cube.s, &pb, 0.01, &c)) goto out;
+    pb = identity_at(0.2, 0.1, 0.025 + 0.3 + 0.005); /* mesh pole over the table */
+    if (region_from_every_start(&table.s, &at0, &mesh.s, &pb, 0.01, &c)) goto out;
+    pb = identity_at(0, 0, 0.6 + 0.005); /* meshes pole to pole */
+    if (region_from_every_start(&mesh.s, &at0, &mesh.s, &pb, 0.01, &c)) goto out;
+    pb = identity_at(0.05, 0.02, 0.3 + 0.1 + 0.001); /* true sphere on the mesh */
+    if (region_from_every_start(&mesh.s, &at0, &ball.s, &pb, 0.01, &c)) goto out;
+    rc = 0;
+out:
+    unfix(&table);
+    unfix(&cube);
+    unfix(&mesh);
+    return rc;
+}
+
+/* ---- contact regions (SPEC 2) ------------------------------------------- */
+
+/* the region of a 0.5 m cube 4 mm above a 2 x 1 x 0.05 m table, its centre
+ * over (x, y), with the table as a or as b */
+static int cube_on_table(double x, double y, double gap, int table_is_b, vrContact *c)
+{
+    Fix table, cube;
+    vrPose pt = identity_at(0, 0, 0), pc = identity_at(x, y, 0.025 + 0.25 + gap);
+    vrWalkCache w;
+    int rc;
+    memset(&w, 0, sizeof w);
+    if (box(&table, 1, 0.5, 0.025) || box(&cube, 0.25, 0.25, 0.25)) return -1;
+    rc = table_is_b ? vrContact_Region(&cube.s, &pc, &table.s, &pt, 0.01, &w, c)
+                    : vrContact_Region(&table.s, &pt, &cube.s, &pc, 0.01, &w, c);
+    unfix(&table);
+    unfix(&cube);
+    return rc;
+}
+
+/* A box flat on a table: its four bottom corners, on the plane midway
+ * between the surfaces; normal +z (the table's face, a is the table).
+ * Farther than d: no region, the same distance. */
+static int test_region_box_flat_on_table_is_its_four_bottom_corners(void)
+{
+    vrContact c;
+    double z = 0.025 + 0.002;
+    vec3 e[4];
+    ENSURE(cube_on_table(0.3, 0.1, 0.004, 0, &c) == 0);
+    ENSURE_NEAR(c.dist, 0.004, 1e-15);
+    ENSURE(c.n.x == 0 && c.n.y == 0 && c.n.z == 1);
+    e[0] = vec3_make(0.05, -0.15, z), e[1] = vec3_make(0.55, -0.15, z);
+    e[2] = vec3_make(0.55, 0.35, z), e[3] = vec3_make(0.05, 0.35, z);
+    if (region_is(&c, e, 4)) return 1;
+    ENSURE(cube_on_table(0.3, 0.1, 0.02, 0, &c) == 0);
+    ENSURE(c.npoints == 0);
+    ENSURE_NEAR(c.dist, 0.02, 1e-15);
+    return 0;
+}
+
+/* The box hangs 0.1 m over the table's +x edge: clipped to the table.  The
+ * table is b this time: the normal is minus its face normal. */
+static int test_region_overhanging_box_is_clipped_to_the_table(void)
+{
+    vrContact c;
+    double z = 0.025 + 0.002;
+    vec3 e[4];
+    ENSURE(cube_on_table(0.85, 0, 0.004, 1, &c) == 0);
+    ENSURE(c.n.x == 0 && c.n.y == 0 && c.n.z == -1);
+    e[0] = vec3_make(0.6, -0.25, z), e[1] = vec3_make(1.0, -0.25, z);
+    e[2] = vec3_make(1.0, 0.25, z), e[3] = vec3_make(0.6, 0.25, z);
+    return region_is(&c, e, 4);
+}
+
+/* A box tilted 20 degrees about x rests on its lower edge: the edge's two
+ * endpoints; with the box across the table's edge, clipped there. */
+static int test_region_tilted_box_gives_its_edge_clipped(void)
+{
+    Fix table, cube;
+    quat q = quat_from_axis_angle(vec3_make(1, 0, 0), 20 * VR_PI / 180);
+    vrPose pa = identity_at(0, 0, 0), pb;
+    vrWalkCache w;
+    vrContact c;
+    vec3 lowest = quat_rotate(q, vec3_make(0, -0.25, -0.25)), e[2];
+    double z0 = 0.025 + 0.003 - lowest.z, z = 0.025 + 0.0015;
+    memset(&w, 0, sizeof w);
+    ENSURE(box(&table, 1, 0.5, 0.025) == 0 && box(&cube, 0.25, 0.25, 0.25) == 0);
+    pb = vrPose_make(vec3_make(0.2, 0, z0), q);
+    ENSURE(vrContact_Region(&table.s, &pa, &cube.s, &pb, 0.01, &w, &c) == 0);
+    ENSURE_NEAR(c.dist, 0.003, 1e-12);
+    e[0] = vec3_make(-0.05, lowest.y, z), e[1] = vec3_make(0.45, lowest.y, z);
+    if (region_is(&c, e, 2)) return 1;
+    pb = vrPose_make(vec3_make(0.9, 0, z0), q);
+    ENSURE(vrContact_Region(&table.s, &pa, &cube.s, &pb, 0.01, &w, &c) == 0);
+    e[0] = vec3_make(0.65, lowest.y, z), e[1] = vec3_make(1.0, lowest.y, z);
+    if (region_is(&c, e, 2)) return 1;
+    unfix(&table);
+    unfix(&cube);
+    return 0;
+}
+
+/* Two boxes on edges, crossed at right angles: one point, the crossing;
+ * normal along the edges' cross product (+z from a to b). */
+static int test_region_crossed_edges_give_one_point(void)
+{
+    Fix cube;
+    quat q45x = quat_from_axis_angle(vec3_make(1, 0, 0), VR_PI / 4);
+    quat q45y = quat_from_axis_angle(vec3_make(0, 1, 0), VR_PI / 4);
+    double r2 = 0.25 * sqrt(2.0);
+    vrPose pa = vrPose_make(vec3_make(0.01, -0.02, 0), q45x), pb = vrPose_make(vec3_make(0, 0, 2 * r2 + 0.006), q45y);
+    vrWalkCache w;
+    vrContact c;
+    vec3 e = vec3_make(0, -0.02, r2 + 0.003);
+    memset(&w, 0, sizeof w);
+    ENSURE(box(&cube, 0.25, 0.25, 0.25) == 0);
+    ENSURE(vrContact_Region(&cube.s, &pa, &cube.s, &pb, 0.01, &w, &c) == 0);
+    ENSURE_NEAR(c.dist, 0.006, 1e-12);
+    ENSURE_NEAR(c.n.z, 1, 1e-15);
+    if (region_is(&c, &e, 1)) return 1;
+    unfix(&cube);
+    return 0;
+}
+
+/* A cube on its corner over a table: the corner's projection. */
+static int test_region_vertex_on_face_is_the_vertex(void)
+{
+    Fix table, cube;
+    quat corner = quat_from_axis_angle(vec3_normalize(vec3_make(1, -1, 0)), acos(1 / sqrt(3.0)));
+    vrPose pa = identity_at(0, 0, 0), pb = vrPose_make(vec3_make(0.1, 0.2, 0.025 + 0.25 * sqrt(3.0) + 0.004), corner);
+    vrWalkCache w;
+    vrContact c;
+    vec3 e = vec3_make(0.1, 0.2, 0.027);
+    memset(&w, 0, sizeof w);
+    ENSURE(box(&table, 1, 0.5, 0.025) == 0 && box(&cube, 0.25, 0.25, 0.25) == 0);
+    ENSURE(vrContact_Region(&table.s, &pa, &cube.s, &pb, 0.01, &w, &c) == 0);
+    ENSURE_NEAR(c.dist, 0.004, 1e-12);
+    if (region_is(&c, &e, 1)) return 1;
+    unfix(&table);
+    unfix(&cube);
+    return 0;
+}
+
+/* Two prisms with 100-gon caps stacked: the overlap is reduced to at most
+ * VR_REGION_MAX points that keep its extent. */
+static int test_region_is_reduced_to_its_extremes(void)
+{
+    vec3 pts[200];
+    vrPolyhedron *p;
+    Fix f;
+    char err[128];
+    vrPose pa = identity_at(0, 0, 0), pb = identity_at(0, 0, 0.2 + 0.004);
+    vrWalkCache w;
+    vrContact c;
+    double xmax = -1, xmin = 1;
+    int i;
+    for (i = 0; i < 100; i++) {
+        double t = 2 * VR_PI * i / 100;
+        pts[2 * i] = vec3_make(0.5 * cos(t), 0.5 * sin(t), -0.1);
+        pts[2 * i + 1] = vec3_make(0.5 * cos(t), 0.5 * sin(t), 0.1);
+    }
+    ENSURE(vrPolyhedron_Hull(pts, 200, &p, err, sizeof err) == 0);
+    memset(&f, 0, sizeof f);
+    f.s.kind = VR_SHAPE_POLY;
+    f.s.poly = p;
+    memset(&w, 0, sizeof w);
+    ENSURE(vrContact_Region(&f.s, &pa, &f.s, &pb, 0.01, &w, &c) == 0);
+    ENSURE(c.npoints >= VR_REGION_MAX / 2 && c.npoints <= VR_REGION_MAX);
+    for (i = 0; i < c.npoints; i++) {
+        ENSURE_NEAR(c.point[i].z, 0.102, 1e-12);
+        if (c.point[i].x > xmax) xmax = c.point[i].x;
+        if (c.point[i].x < xmin) xmin = c.point[i].x;
+    }
+    ENSURE_NEAR(xmax, 0.5, 1e-12);
+    ENSURE_NEAR(xmin, -0.5, 1e-12);
+    vrPolyhedron_Free(p);
+    return 0;
+}
+
+/* ---- spheres ------------------------------------------------------------- */
+
+/* Two true spheres: centre to centre, gap |cb - ca| - ra - rb, region the
+ * midpoint; overlapping, the depth is exact. */
+static int test_sphere_sphere_closed_form(void)
+{
+    Fix a, b;
+    vrPose pa = identity_at(1, 2, 3), pb = identity_at(1.3, 2.4, 3);
+    vrContact c;
+    sphere(&a, 0.1);
+    sphere(&b, 0.2);
+    ENSURE(vrContact_Region(&a.s, &pa, &b.s, &pb, 0.5, NULL, &c) == 0);
+    ENSURE_NEAR(c.dist, 0.5 - 0.3, 1e-15);
+    ENSURE_NEAR(c.n.x, 0.6, 1e-15);
+    ENSURE_NEAR(c.n.y, 0.8, 1e-15);
+    ENSURE_NEAR(vec3_dist(c.pa, vec3_make(1.06, 2.08, 3)), 0, 1e-15);
+    ENSURE(c.npoints == 1);
+    ENSURE_NEAR(vec3_dist(c.point[0], vec3_make(1.12, 2.16, 3)), 0, 1e-15);
+    pb = identity_at(1.15, 2.2, 3);
+    ENSURE(vrContact_Distance(&a.s, &pa, &b.s, &pb, NULL, &c) == 0);
+    ENSURE_NEAR(c.dist, -0.05, 1e-15);
+    ENSURE_NEAR(c.n.y, 0.8, 1e-15);
+    return 0;
+}
+
+/* A sphere and a box: face, edge and corner regions by the clamp; a centre
+ * inside is penetration by the nearest face's distance plus the radius. */
+static int test_sphere_box_closed_form(void)
+{
+    Fix s, b;
+    quat q = quat_from_axis_angle(vec3_make(0, 0, 1), 0.3);
+    vrPose pb = vrPose_make(vec3_make(0.5, 0, 0), q), ps;
+    vrContact c;
+    sphere(&s, 0.1);
+    ENSURE(box(&b, 0.2, 0.3, 0.4) == 0);
+    /* face +z: sphere as a */
+    ps = vrPose_make(vrPose_apply(&pb, vec3_make(0.05, 0.1, 0.55)), quat_identity());
+    ENSURE(vrContact_Region(&s.s, &ps, &b.s, &pb, 0.1, NULL, &c) == 0);
+    ENSURE_NEAR(c.dist, 0.05, 1e-15);
+    ENSURE_NEAR(c.n.z, -1, 1e-15);
+    ENSURE(c.npoints == 1);
+    ENSURE_NEAR(vec3_dist(c.point[0], vrPose_apply(&pb, vec3_make(0.05, 0.1, 0.45))), 0, 1e-15);
+    /* edge (+x, +y): box as a */
+    ps = vrPose_make(vrPose_apply(&pb, vec3_make(0.2 + 0.3, 0.3 + 0.4, 0)), quat_identity());
+    ENSURE(vrContact_Distance(&b.s, &pb, &s.s, &ps, NULL, &c) == 0);
+    ENSURE_NEAR(c.dist, 0.4, 1e-15);
+    ENSURE_NEAR(vec3_dot(c.n, vrPose_rotate(&pb, vec3_make(0.6, 0.8, 0))), 1, 1e-15);
+    /* corner */
+    ps = vrPose_make(vrPose_apply(&pb, vec3_make(0.3, 0.4, 0.5)), quat_identity());
+    ENSURE(vrContact_Distance(&b.s, &pb, &s.s, &ps, NULL, &c) == 0);
+    ENSURE_NEAR(c.dist, sqrt(0.03) - 0.1, 1e-15);
+    /* centre inside, nearest face -x (0.05 deep): depth 0.15 along -x */
+    ps = vrPose_make(vrPose_apply(&pb, vec3_make(-0.15, 0.05, 0.1)), quat_identity());
+    ENSURE(vrContact_Region(&b.s, &pb, &s.s, &ps, 0.01, NULL, &c) == 0);
+    ENSURE_NEAR(c.dist, -0.15, 1e-15);
+    ENSURE_NEAR(vec3_dot(c.n, vrPose_rotate(&pb, vec3_make(-1, 0, 0))), 1, 1e-15);
+    ENSURE(c.npoints == 1);
+    ENSURE(same_bits(&c.pa, &c.pb, sizeof c.pa));
+    unfix(&b);
+    return 0;
+}
+
+/* The same box as a general polyhedron (walk to the centre, canonical
+ * feature) gives the closed form's distance and normal, in and out. */
+static int test_sphere_polyhedron_agrees_with_the_box_closed_form(void)
+{
+    Fix s, b, p;
+    int k;
+    sphere(&s, 0.05);
+    ENSURE(box(&b, 0.2, 0.3, 0.4) == 0);
+    p = b;
+    p.s.kind = VR_SHAPE_POLY;
+    for (k = 0; k < 3000; k++) {
+        vrPose pb = vrPose_make(rnd_unit(), rnd_rotation());
+        vrPose ps = vrPose_make(vec3_madd(pb.p, rnd(0, 0.7), rnd_unit()), quat_identity());
+        vrWalkCache w = start_cache(&p.s, &p.s, 1);
+        vrContact cb, cp;
+        int swap = k & 1;
+        w.b.type = w.b.index = 0;
+        ENSURE(vrContact_Distance(swap ? &s.s : &b.s, swap ? &ps : &pb, swap ? &b.s : &s.s, swap ? &pb : &ps, NULL,
+                                  &cb) == 0);
+        ENSURE(vrContact_Distance(swap ? &s.s : &p.s, swap ? &ps : &pb, swap ? &p.s : &s.s, swap ? &pb : &ps, &w,
+                                  &cp) == 0);
+        ENSURE_NEAR(cp.dist, cb.dist, 1e-12);
+        ENSURE_NEAR(vec3_dist(cp.n, cb.n), 0, 1e-9);
+        ENSURE(w.fallbacks == 0);
+    }
+    unfix(&b);
+    return 0;
+}
+
+/* ---- penetration (libccd) ------------------------------------------------- */
+
+/* libccd's direction points from a toward b, and MPR is exact for spheres. */
+static int test_penetration_direction_points_from_a_to_b(void)
+{
+    Fix a, b, c1, c2;
+    vrPose pa = identity_at(0, 0, 0), pb = identity_at(0.25, 0, 0);
+    vec3 dir, pos;
+    double depth;
+    sphere(&a, 0.1);
+    sphere(&b, 0.2);
+    ENSURE(vrPenetration(&a.s, &pa, &b.s, &pb, &depth, &dir, &pos) == 0);
+    ENSURE_NEAR(depth, 0.05, 1e-9);
+    ENSURE_NEAR(dir.x, 1, 1e-9);
+    ENSURE(vrPenetration(&b.s, &pb, &a.s, &pa, &depth, &dir, &pos) == 0);
+    ENSURE_NEAR(dir.x, -1, 1e-9);
+    ENSURE(box(&c1, 0.25, 0.25, 0.25) == 0 && box(&c2, 0.25, 0.25, 0.25) == 0);
+    pb = identity_at(0.01, -0.02, 0.47);
+    ENSURE(vrPenetration(&c1.s, &pa, &c2.s, &pb, &depth, &dir, &pos) == 0);
+    ENSURE_NEAR(depth, 0.03, 1e-6);
+    ENSURE_NEAR(dir.z, 1, 1e-6);
+    pb = identity_at(0, 0, 0.51);
+    ENSURE(vrPenetration(&c1.s, &pa, &c2.s, &pb, &depth, &dir, &pos) == -1);
+    unfix(&c1);
+    unfix(&c2);
+    return 0;
+}
+
+/* Overlapping polyhedra: vrContact reports libccd's depth and direction,
+ * one region point at libccd's position; spheres use the exact closed form. */
+static int test_penetration_contact_is_libccd_depth_and_direction(void)
+{
+    Fix c, m, s;
+    int k, n = 0;
+    ENSURE(box(&c, 0.25, 0.25, 0.25) == 0 && poly(&m, 2) == 0);
+    sphere(&s, 0.2);
+    for (k = 0; k < 500; k++) {
+        const vrShape *a = &c.s, *b = k & 1 ? &m.s : &c.s;
+        vrPose pa = vrPose_make(vec3_zero(), rnd_rotation());
+        vrPose pb = vrPose_make(vec3_scale(rnd_unit(), rnd(0.05, 0.35)), rnd_rotation());
+        vrContact r;
+        vec3 dir, pos;
+        double depth;
+        ENSURE(vrContact_Region(a, &pa, b, &pb, 0.01, NULL, &r) == 0);
+        if (vrPenetration(a, &pa, b, &pb, &depth, &dir, &pos) != 0) continue;
+        n++;
+        ENSURE_NEAR(r.dist, -depth, 1e-15);
+        ENSURE_NEAR(vec3_dist(r.n, dir), 0, 1e-15);
+        ENSURE(r.npoints == 1 && vec3_dist(r.point[0], pos) == 0);
+    }
+    ENSURE(n > 400);
+    for (k = 0; k < 200; k++) { /* a sphere centre inside a polyhedron: exact depth */
+        vrPose pa = vrPose_make(vec3_zero(), rnd_rotation()), ps = vrPose_make(vec3_scale(rnd_unit(), 0.05), quat_identity());
+        vec3 x = vrPose_invapply(&pa, ps.p);
+        const vrPolyhedron *p = m.s.poly;
+        vrContact r;
+        int f, near = 0;
+        for (f = 1; f < p->nf; f++)
+            if (p->face_offset[f] - vec3_dot(p->face_normal[f], x) < p->face_offset[near] - vec3_dot(p->face_normal[near], x))
+                near = f;
+        ENSURE(vrContact_Distance(&m.s, &pa, &s.s, &ps, NULL, &r) == 0);
+        ENSURE_NEAR(r.dist, -(p->face_offset[near] - vec3_dot(p->face_normal[near], x)) - 0.2, 1e-12);
+        ENSURE_NEAR(vec3_dist(r.n, vrPose_rotate(&pa, p->face_normal[near])), 0, 1e-12);
+    }
+    unfix(&c);
+    unfix(&m);
+    return 0;
+}
+
+/* ---- robustness ----------------------------------------------------------- */
+
+/* A 5 mm plate, a 2 m table under a 1 cm ball mesh, gaps of 1e-12 m: finite
+ * results, the table's normal, the right distance, a region. */
+static int test_contact_is_robust_on_thin_large_and_touching_shapes(void)
+{
+    Fix table, plate, ball;
+    char err[128];
+    int k;
+    vrPose pa = identity_at(0, 0, 0);
+    ENSURE(box(&table, 1, 0.5, 0.025) == 0 && box(&plate, 0.3, 0.2, 0.0025) == 0);
+    memset(&ball, 0, sizeof ball);
+    ball.s.kind = VR_SHAPE_POLY;
+    ENSURE(vrPolyhedron_Sphere(0.01, 10, 10, &ball.own, err, sizeof err) == 0);
+    ball.s.poly = ball.own;
+    for (k = 0; k < 40; k++) { /* resting on a tilted table, 1e-12 m or 3 mm above it */
+        const vrShape *b = k & 1 ? &plate.s : &ball.s;
+        double h = k & 1 ? 0.0025 : 0.01, gap = k & 2 ? 0.003 : 1e-12;
+        vrPose pt = vrPose_make(rnd_unit(), rnd_rotation());
+        vec3 up = vrPose_rotate(&pt, vec3_make(0, 0, 1));
+        vrPose pb = vrPose_make(vec3_madd(vrPose_apply(&pt, vec3_make(0.9, 0.4, 0.025)), h + gap, up), pt.q);
+        vrWalkCache w = start_cache(&table.s, b, 1);
+        vrContact c;
+        ENSURE(vrContact_Region(&table.s, &pt, b, &pb, 0.01, &w, &c) == 0);
+        ENSURE_NEAR(c.dist, gap, 1e-15);
+        ENSURE(same_bits(&c.n, &up, sizeof up));
+        /* the ball: its lower rings are within d */
+        ENSURE_MSG(c.npoints == (k & 1 ? 4 : 10), "case %d: %d points", k, c.npoints);
+        ENSURE(vec3_isfinite(c.point[0]) && vec3_isfinite(c.pa) && vec3_isfinite(c.pb));
+    }
+    for (k = 0; k < 2000; k++) { /* thin plate tumbling near the table */
+        vrPose pb = vrPose_make(vec3_make(rnd(-1, 1), rnd(-0.5, 0.5), 0.025 + rnd(0.0, 0.4)), rnd_rotation());
+        vrWalkCache w = start_cache(&table.s, &plate.s, 1);
+        vrContact c;
+        double bf = vrClosest_BruteForce(table.s.poly, &pa, plate.s.poly, &pb);
+        ENSURE(vrContact_Region(&table.s, &pa, &plate.s, &pb, 0.01, &w, &c) == 0);
+        ENSURE(vec3_isfinite(c.n) && isfinite(c.dist));
+        if (bf > 1e-6) ENSURE_NEAR(c.dist, bf, 1e-9);
+        if (c.dist <= 0.01) ENSURE(c.npoints >= 1 && c.npoints <= VR_REGION_MAX);
+    }
+    unfix(&table);
+    unfix(&plate);
+    unfix(&ball);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    test_init(argc, argv);
+    RUN_TEST(test_distance_is_brute_force_distance_and_independent_of_cache);
+    RUN_TEST(test_region_is_bit_identical_from_every_start_cache);
+    RUN_TEST(test_region_box_flat_on_table_is_its_four_bottom_corners);
+    RUN_TEST(test_region_overhanging_box_is_clipped_to_the_table);
+    RUN_TEST(test_region_tilted_box_gives_its_edge_clipped);
+    RUN_TEST(test_region_crossed_edges_give_one_point);
+    RUN_TEST(test_region_vertex_on_face_is_the_vertex);
+    RUN_TEST(test_region_is_reduced_to_its_extremes);
+    RUN_TEST(test_sphere_sphere_closed_form);
+    RUN_TEST(test_sphere_box_closed_form);
+    RUN_TEST(test_sphere_polyhedron_agrees_with_the_box_closed_form);
+    RUN_TEST(test_penetration_direction_points_from_a_to_b);
+    RUN_TEST(test_penetration_contact_is_libccd_depth_and_direction);
+    RUN_TEST(test_contact_is_robust_on_thin_large_and_touching_shapes);
+    return test_summary();
+}
