@@ -1,0 +1,37 @@
+/* display.c — the shell's side of SPEC 4: open the display when something
+ * needs it, and once it is open draw every frame and write it into the
+ * frames folder, numbered by the frame count since `restart`. */
+#include <stdio.h>
+#include "commands.h"
+
+int sh_display_open(Shell *sh, char *err, size_t n)
+{
+    if (sh->display) return 0;
+    return vrDisplay_Open(&sh->display, err, n);
+}
+
+/* the current frame, when a display is open; written when a folder is set */
+int sh_display_draw(Shell *sh, char *err, size_t n)
+{
+    vrStats st;
+    if (!sh->display) return 0;
+    if (vrDisplay_Render(sh->display, sh->world, &sh->view, err, n) != 0) return -1;
+    if (!sh->frames_dir[0]) return 0;
+    vrWorld_GetStats(sh->world, &st);
+    return vrDisplay_WriteFrames(sh->display, sh->frames_dir, st.frames, err, n);
+}
+
+void sh_display_close(Shell *sh)
+{
+    vrDisplay_Close(sh->display);
+    sh->display = NULL;
+}
+
+/* `display` and `refresh` both open the display if needed and draw the
+ * current frame (000000 before the first step) */
+int run_display(Shell *sh, const Stmt *st, char *err, size_t n)
+{
+    (void)st;
+    if (sh_display_open(sh, err, n) != 0) return -1;
+    return sh_display_draw(sh, err, n);
+}

@@ -1,0 +1,3 @@
+sphere in_bad
+unknown_thing
+sphere after_error

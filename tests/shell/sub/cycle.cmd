@@ -1,0 +1,2 @@
+# read by read_self.cmd: reads it again
+read ../read_self.cmd
