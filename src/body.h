@@ -70,6 +70,11 @@ typedef struct vrBody {
     int nsupport;
     vrSupport support[VR_MAX_SUPPORTS];
     int hit;                        /* an impulse hit it in the current frame */
+    /* the last pose asked for: a body in several pairs is asked again and
+     * again at the same grid point (the same bits either way) */
+    double pose_t;
+    vrPose pose;
+    int pose_valid;
 } vrBody;
 
 /* settings that shape free flight */

@@ -26,6 +26,7 @@ typedef struct vrPair {
     int flagged;              /* to be evaluated at the next span start */
     double t_check;
     double key;               /* expected earliest event (in the heap when scheduled and finite) */
+    int active;               /* index in the active list, or -1 */
     vrWalkCache cache;
 } vrPair;
 
@@ -35,7 +36,7 @@ typedef struct vrUndo {
     double at;                /* the evaluation time */
     int inside;
     double t_check;
-    double key;               /* INFINITY: was not in the heap */
+    double key;
 } vrUndo;
 
 typedef struct vrIntList { int n, cap; int *v; } vrIntList;
@@ -49,6 +50,7 @@ struct vrOwner {
     vrPair *pair;
     int npair, paircap;
     vrHeap heap;
+    vrIntList active;         /* inside pairs: due at every grid point, kept out of the heap */
     vrIntList flagged, due;
     vrUndo *undo;
     int nundo, undocap;
@@ -118,6 +120,7 @@ void vrOwner_Free(vrOwner *o)
     free(o->body);
     free(o->pair);
     vrHeap_Free(&o->heap);
+    free(o->active.v);
     free(o->flagged.v);
     free(o->due.v);
     free(o->undo);
@@ -137,13 +140,42 @@ static void flag(vrOwner *o, int pi)
     }
 }
 
+static void deactivate(vrOwner *o, int pi)
+{
+    vrPair *p = &o->pair[pi];
+    int last;
+    if (p->active < 0) return;
+    last = o->active.v[--o->active.n];
+    o->active.v[p->active] = last;
+    o->pair[last].active = p->active;
+    p->active = -1;
+}
+
+/* With the heap, a pair waits in the heap until its key, or — inside the
+ * envelope, due at every grid point — in the active list, which costs no
+ * heap operation per step.  Without the heap, every scheduled pair is due
+ * always and neither is used. */
+static void place(vrOwner *o, int pi)
+{
+    vrPair *p = &o->pair[pi];
+    vrHeap_Remove(&o->heap, pi);
+    deactivate(o, pi);
+    if (!o->p.use_heap || !p->scheduled) return;
+    if (p->inside) {
+        p->active = o->active.n;
+        list_push(&o->active, pi);
+    } else if (p->key < INFINITY) {
+        vrHeap_Set(&o->heap, pi, p->key, p->order);
+    }
+}
+
 /* pairs of two frozen bodies cannot change until one of them wakes: they are
  * not scheduled (SPEC 3.3: a resting body and its supports) */
 static void update_schedule(vrOwner *o, int pi)
 {
     vrPair *p = &o->pair[pi];
     p->scheduled = !(frozen(o->body[p->a]) && frozen(o->body[p->b]));
-    if (!p->scheduled) vrHeap_Remove(&o->heap, pi);
+    if (!p->scheduled) place(o, pi);
 }
 
 void vrOwner_SetParams(vrOwner *o, const vrParams *p)
@@ -151,11 +183,10 @@ void vrOwner_SetParams(vrOwner *o, const vrParams *p)
     int i;
     o->p = *p;
     o->v_rest = sqrt(2.0 * vec3_len(p->flight.accel) * p->d);
-    if (!p->use_heap) {
-        vrHeap_Free(&o->heap);
-        vrHeap_Init(&o->heap);
+    for (i = 0; i < o->npair; i++) {
+        place(o, i);
+        flag(o, i);
     }
-    for (i = 0; i < o->npair; i++) flag(o, i);
 }
 
 int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
@@ -180,7 +211,7 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
 int vrOwner_BodyCount(const vrOwner *o) { return o->nheld; }
 
 static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPose *pb, vrContact *c);
-static void set_key(vrOwner *o, int pi, double key);
+static void settle(vrOwner *o, int pi, int inside, double key);
 
 /* A pair's state at a frame boundary is a pure function of the poses: every
  * pair is evaluated at the last grid point of a frame (or, with the heap,
@@ -197,6 +228,7 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
     p->order = ((long long)a << 32) | (long long)b;
     p->t_check = -INFINITY;
     p->key = -INFINITY;
+    p->active = -1;
     if (list_push(&o->body_pairs[a], o->npair) != 0 || list_push(&o->body_pairs[b], o->npair) != 0) return -1;
     o->npair++;
     update_schedule(o, o->npair - 1);
@@ -205,10 +237,11 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
     } else if (p->scheduled) {
         vrPose pa, pb;
         vrContact c;
+        int inside;
         query(o, p, t, 0, &pa, &pb, &c);
-        p->inside = c.dist <= o->p.d;
+        inside = c.dist <= o->p.d;
         p->t_check = t;
-        set_key(o, o->npair - 1, p->inside ? t : vrSchedule_Key(o->body[a], o->body[b], t, c.dist, o->p.d, &o->p.flight));
+        settle(o, o->npair - 1, inside, inside ? t : vrSchedule_Key(o->body[a], o->body[b], t, c.dist, c.n, o->p.d, &o->p.flight));
     }
     return 0;
 }
@@ -223,6 +256,7 @@ static void reindex(vrOwner *o)
     int i;
     vrHeap_Free(&o->heap);
     vrHeap_Init(&o->heap);
+    o->active.n = 0;
     o->flagged.n = 0;
     for (i = 0; i < o->bodycap; i++) o->body_pairs[i].n = 0;
     for (i = 0; i < o->npair; i++) {
@@ -230,8 +264,10 @@ static void reindex(vrOwner *o)
         list_push(&o->body_pairs[p->a], i);
         list_push(&o->body_pairs[p->b], i);
         p->flagged = 0;
+        p->active = -1;
         flag(o, i);
         update_schedule(o, i);
+        place(o, i);
     }
 }
 
@@ -276,13 +312,12 @@ void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
 
 /* ---- keys and the undo log ---------------------------------------------------- */
 
-static void set_key(vrOwner *o, int pi, double key)
+/* a pair's status and key after an evaluation, and where it waits */
+static void settle(vrOwner *o, int pi, int inside, double key)
 {
-    vrPair *p = &o->pair[pi];
-    p->key = key;
-    if (!o->p.use_heap || !p->scheduled) return;
-    if (key == INFINITY) vrHeap_Remove(&o->heap, pi);
-    else vrHeap_Set(&o->heap, pi, key, p->order);
+    o->pair[pi].inside = inside;
+    o->pair[pi].key = key;
+    place(o, pi);
 }
 
 static void remember(vrOwner *o, int pi, double at)
@@ -304,9 +339,8 @@ void vrOwner_Advance(vrOwner *o, double t)
         const vrUndo *u = &o->undo[i];
         vrPair *p = &o->pair[u->pair];
         if (u->at <= t) continue;
-        p->inside = u->inside;
         p->t_check = u->t_check;
-        set_key(o, u->pair, u->key);
+        settle(o, u->pair, u->inside, u->key);
     }
     o->nundo = 0;
     if (o->pending_t != t) o->npending = 0;
@@ -561,13 +595,14 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     p->t_check = t;
     if (c.dist > o->p.d) {
         int was_inside = p->inside;
-        p->inside = 0;
-        set_key(o, pi, vrSchedule_Key(o->body[p->a], o->body[p->b], t, c.dist, o->p.d, &o->p.flight));
+        settle(o, pi, 0, vrSchedule_Key(o->body[p->a], o->body[p->b], t, c.dist, c.n, o->p.d, &o->p.flight));
         return was_inside || t == t_prev ? lost_support(o, ev, t, p, &c) : 0;
     }
-    set_key(o, pi, t);
-    if (!p->inside && t > t_prev && impact(o, ev, p, bisect(o, p, t_prev, t))) return 1;
-    p->inside = 1;
+    if (!p->inside && t > t_prev && impact(o, ev, p, bisect(o, p, t_prev, t))) {
+        settle(o, pi, p->inside, t);  /* due again at once: it is rolled back or re-evaluated */
+        return 1;
+    }
+    settle(o, pi, 1, t);
     query(o, p, t, 1, &pa, &pb, &c);
     o->checks--;                         /* the same query again, with the region */
     return inside_events(o, ev, t, p, &pa, &pb, &c);
@@ -628,7 +663,6 @@ static void evaluate_into_found(vrOwner *o, int pi, double t, double t_prev, int
 static void span_start(vrOwner *o, double ts, int allow)
 {
     int i;
-    sort_pairs(o, &o->flagged);
     for (i = 0; i < o->flagged.n; i++) {
         int pi = o->flagged.v[i];
         o->pair[pi].flagged = 0;
@@ -650,12 +684,14 @@ static void collect_due(vrOwner *o, double t)
             if (o->pair[id].scheduled) list_push(&o->due, id);
         return;
     }
+    /* the order pairs are evaluated in at one grid point does not matter:
+     * they do not touch each other, and events are sorted afterwards */
+    for (id = 0; id < o->active.n; id++) list_push(&o->due, o->active.v[id]);
     while ((id = vrHeap_Top(&o->heap, &key)) >= 0 && key <= t) {
         vrHeap_Pop(&o->heap);
         o->heap_pops++;
         list_push(&o->due, id);
     }
-    sort_pairs(o, &o->due);
 }
 
 int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *ev)
@@ -670,7 +706,7 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
         collect_due(o, t);
         for (i = 0; i < o->due.n; i++) evaluate_into_found(o, o->due.v[i], t, vrGrid_Point(g, k - 1), 1);
         if (o->nfound) return take_first(o, t, ev);
-        if (!o->p.use_heap) { k++; continue; }
+        if (!o->p.use_heap || o->active.n > 0) { k++; continue; }
         if (vrHeap_Top(&o->heap, &key) < 0) break;
         k = k + 1 > vrSchedule_FirstPointAtOrAfter(g, key) ? k + 1 : vrSchedule_FirstPointAtOrAfter(g, key);
     }

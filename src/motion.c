@@ -24,6 +24,7 @@ void vrBody_SetMassProperties(vrBody *b, double mass, const mat33 *inertia_unit,
     double span;
     b->r_in = r_in;
     b->r_out = r_out;
+    b->pose_valid = 0;
     b->is_static = mass < 0;
     b->mass = fabs(mass);
     b->inv_mass = b->is_static ? 0.0 : 1.0 / b->mass;
@@ -184,8 +185,15 @@ static quat orientation_at(vrBody *b, double tau)
 void vrBody_Pose(vrBody *b, double t, vrPose *pose)
 {
     vec3 x;
+    if (b->pose_valid && b->pose_t == t) {
+        *pose = b->pose;
+        return;
+    }
     vrBody_Position(b, t, &x);
     *pose = vrPose_make(x, orientation_at(b, t - b->m.t0));
+    b->pose = *pose;
+    b->pose_t = t;
+    b->pose_valid = 1;
 }
 
 /* ---- anchoring ------------------------------------------------------------ */
@@ -254,6 +262,7 @@ void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vr
     m->tcap = cap_time(m->v0, m->a, f->max_linear);
     classify_rotation(b);
     reset_rotation_cache(b);
+    b->pose_valid = 0;
 }
 
 void vrBody_Restore(vrBody *b, double t0, vec3 x0, vec3 v0, quat q0, vec3 L, const vrFlight *f)
@@ -268,6 +277,7 @@ void vrBody_Restore(vrBody *b, double t0, vec3 x0, vec3 v0, quat q0, vec3 L, con
     m->tcap = cap_time(m->v0, m->a, f->max_linear);
     classify_rotation(b);
     reset_rotation_cache(b);
+    b->pose_valid = 0;
 }
 
 void vrBody_Reanchor(vrBody *b, double t, const vrFlight *f)

@@ -63,6 +63,12 @@ static double spin_margin(const vrBody *b)
     return b->r_out - b->r_in;
 }
 
+/* ...and not faster than |omega| R: the same margin as a rate */
+static double spin_rate(const vrBody *b)
+{
+    return spin_margin(b) > 0 ? vrBody_SpinBound(b) * b->r_out : 0.0;
+}
+
 static int moves(const vrBody *b) { return vrBody_IsFree(b); }
 
 /* time left before b's speed stops growing */
@@ -100,27 +106,87 @@ static double cover(double *room, double *c, double k, double len, double cmax)
     return INFINITY;
 }
 
-double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, double d, const vrFlight *f)
+/* the first tau > 0 with A tau^2 + B tau + C <= 0, given C > 0 (INFINITY if none) */
+static double first_root(double A, double B, double C)
 {
-    double room = dist - d - spin_margin(a) - spin_margin(b) - KEY_MARGIN;
-    double cmax = (moves(a) ? f->max_linear : 0) + (moves(b) ? f->max_linear : 0);
-    double t1, k1, k2, c, tau;
+    double disc, q, r1, r2;
+    if (A == 0) return B < 0 ? -C / B : INFINITY;
+    disc = B * B - 4 * A * C;
+    if (disc < 0) return INFINITY;               /* stays positive */
+    q = -0.5 * (B + (B < 0 ? -sqrt(disc) : sqrt(disc)));
+    r1 = q / A;
+    r2 = q != 0 ? C / q : INFINITY;
+    if (r1 > r2) { double x = r1; r1 = r2; r2 = x; }
+    return r1 > 0 ? r1 : r2 > 0 && A < 0 ? r2 : INFINITY;
+}
+
+typedef struct vrClosing {
+    double room;       /* distance to cover before the pair can be within d */
+    double spin;       /* closing speed that turning adds (counted as a rate) */
+    double cmax;       /* the closing speed never exceeds this */
+    double t1;         /* until then both accelerations are exact (no speed cap) */
+    vec3 dv, da;       /* relative velocity and acceleration, b's minus a's */
+} vrClosing;
+
+/* thesis eq. (5) generalised: any direction, closing speed |dv| growing at
+ * most |da| until t1, at most the larger acceleration after */
+static double key_any_direction(const vrClosing *k, const vrBody *a, const vrBody *b)
+{
+    double cmax = k->cmax + k->spin, room = k->room, c = fmin(vec3_len(k->dv) + k->spin, cmax), tau;
+    tau = cover(&room, &c, vec3_len(k->da), k->t1, cmax);
+    if (tau == INFINITY && k->t1 < INFINITY) {
+        tau = cover(&room, &c, fmax(vec3_len(a->m.a), vec3_len(b->m.a)), INFINITY, cmax);
+        if (tau < INFINITY) tau += k->t1;
+    }
+    return tau;
+}
+
+/* Along the separating direction n: for convex bodies
+ * dist(tau) >= dist - (R - r) margins + n.dv tau + n.da tau^2 / 2
+ * exactly until t1; from t1 on, the bound above from what is left. */
+static double key_along_normal(const vrClosing *k, vec3 n, const vrBody *a, const vrBody *b)
+{
+    double B = vec3_dot(n, k->dv) - k->spin, A = 0.5 * vec3_dot(n, k->da), tau = first_root(A, B, k->room), left;
+    vrClosing after;
+    if (tau <= k->t1) return tau;
+    if (k->t1 == INFINITY) return INFINITY;
+    left = k->room + B * k->t1 + A * k->t1 * k->t1;
+    if (left <= 0) return k->t1;
+    after = *k;
+    after.room = left;
+    after.dv = vec3_madd(k->dv, k->t1, k->da);
+    after.t1 = 0;
+    return k->t1 + key_any_direction(&after, a, b);
+}
+
+/* the later of the two bounds: moving in any direction, and along n */
+static double key_for(const vrClosing *k, vec3 n, const vrBody *a, const vrBody *b)
+{
+    if (k->room <= 0) return 0;
+    return fmax(key_any_direction(k, a, b), key_along_normal(k, n, a, b));
+}
+
+double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)
+{
+    vrClosing whole, rate;
     vec3 va, vb;
-    if (room <= 0) return t;
-    if (cmax <= 0) return INFINITY;
+    whole.room = dist - d - KEY_MARGIN;
+    whole.cmax = (moves(a) ? f->max_linear : 0) + (moves(b) ? f->max_linear : 0);
+    if (whole.room <= 0) return t;
+    if (whole.cmax <= 0) return INFINITY;
     vrBody_Velocity(a, t, &va);
     vrBody_Velocity(b, t, &vb);
-    c = fmin(vec3_len(vec3_sub(va, vb)), cmax);
+    whole.dv = vec3_sub(vb, va);
     /* until either body reaches the speed cap the relative acceleration is
-     * exactly a_a - a_b (0 between two free bodies under the same force);
-     * after that at most the larger of the two */
-    t1 = fmin(cap_left(a, t), cap_left(b, t));
-    k1 = vec3_len(vec3_sub(a->m.a, b->m.a));
-    k2 = fmax(vec3_len(a->m.a), vec3_len(b->m.a));
-    tau = cover(&room, &c, k1, t1, cmax);
-    if (tau == INFINITY && t1 < INFINITY) {
-        tau = cover(&room, &c, k2, INFINITY, cmax);
-        if (tau < INFINITY) tau += t1;
-    }
-    return t + tau;
+     * exactly a_b - a_a (0 between two free bodies under the same force) */
+    whole.da = vec3_sub(b->m.a, a->m.a);
+    whole.t1 = fmin(cap_left(a, t), cap_left(b, t));
+    /* turning bodies: the thesis takes (R - r) off the distance at once;
+     * turning at omega also cannot close faster than omega R.  Each bound
+     * holds, so the later time does. */
+    rate = whole;
+    whole.spin = 0;
+    whole.room -= spin_margin(a) + spin_margin(b);
+    rate.spin = spin_rate(a) + spin_rate(b);
+    return t + fmax(key_for(&whole, n, a, b), key_for(&rate, n, a, b));
 }

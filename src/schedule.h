@@ -23,7 +23,10 @@ long vrSchedule_FirstPointAtOrAfter(const vrGrid *g, double t);
 /* SPEC 3.3: the earliest time after t at which the pair, dist apart at t,
  * could come within d: (R - r) dropped for bodies that cannot rotate, the
  * closing speed bounded piecewise and split at the speed cap (thesis eq. 5).
- * Returns t when the pair is due now, INFINITY when it can never close. */
-double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, double d, const vrFlight *f);
+ * With n, the unit normal from a toward b at t, the bound also uses the
+ * direction of motion (thesis 6.3): a pair moving apart is not checked
+ * again until the speed caps could turn it round.  Returns t when the pair
+ * is due now, INFINITY when it can never close. */
+double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f);
 
 #endif

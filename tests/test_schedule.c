@@ -35,13 +35,14 @@ static void make_body(vrBody *b, int id, int sphere, int is_static)
     }
 }
 
-static double distance(vrBody *a, vrBody *b, double t, vrWalkCache *c)
+static double distance(vrBody *a, vrBody *b, double t, vrWalkCache *c, vec3 *n)
 {
     vrPose pa, pb;
     vrContact ct;
     vrBody_Pose(a, t, &pa);
     vrBody_Pose(b, t, &pb);
     vrContact_Distance(&a->shape, &pa, &b->shape, &pb, c, &ct);
+    if (n) *n = ct.n;
     return ct.dist;
 }
 
@@ -56,6 +57,7 @@ static int test_key_never_overestimates(void)
         vrBody a, b;
         vrWalkCache cache;
         double d = 0.01 + 0.1 * uni(), key, D0;
+        vec3 n0;
         int k;
         memset(&cache, 0, sizeof cache);
         f.accel = trial % 3 ? vec3_make(0, 0, -9.8) : vec3_zero();
@@ -66,14 +68,14 @@ static int test_key_never_overestimates(void)
                       vec3_scale(rvec(1), 0.1), &f);
         vrBody_Anchor(&b, 0, vec3_add(vec3_make(1.5, 0, 0), rvec(1)), rvec(5),
                       quat_normalize(quat_make(sym(1), sym(1), sym(1), sym(1))), vec3_scale(rvec(1), 0.1), &f);
-        D0 = distance(&a, &b, 0, &cache);
+        D0 = distance(&a, &b, 0, &cache, &n0);
         if (D0 <= d) continue;
-        key = vrSchedule_Key(&a, &b, 0, D0, d, &f);
+        key = vrSchedule_Key(&a, &b, 0, D0, n0, d, &f);
         if (key < INFINITY) finite++;
         for (k = 1; k <= 200; k++) {
             double t = fmin(key, 3.0) * k / 200.0;
             if (t >= key) break;
-            if (distance(&a, &b, t, &cache) <= d) { violations++; break; }
+            if (distance(&a, &b, t, &cache, NULL) <= d) { violations++; break; }
         }
     }
     vrPolyhedron_Free(cube_poly);
