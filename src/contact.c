@@ -851,6 +851,20 @@ static int contact(const vrShape *a, const vrPose *pa, const vrShape *b, const v
     return poly_contact(a, pa, b, pb, d, cache, out);
 }
 
+int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
+                    vrWalkCache *cache, double *dist, vec3 *n)
+{
+    vec3 ca, cb;
+    int pen;
+    double dw;
+    if (a->kind == VR_SHAPE_SPHERE || b->kind == VR_SHAPE_SPHERE || !a->poly || !b->poly || !cache) return -1;
+    dw = vrClosest_Walk(a->poly, pa, b->poly, pb, cache, &ca, &cb, NULL, &pen);
+    if (pen || !(dw > 0)) return -1;
+    *dist = dw;
+    *n = vec3_scale(vec3_sub(cb, ca), 1.0 / dw);
+    return 0;
+}
+
 int vrContact_Distance(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
                        vrWalkCache *cache, vrContact *out)
 {

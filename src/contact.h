@@ -83,6 +83,16 @@ int vrContact_Distance(const vrShape *a, const vrPose *pa, const vrShape *b, con
 int vrContact_Region(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
                      double d, vrWalkCache *cache, vrContact *out);
 
+/* The walk's own distance and unit direction a -> b for two polyhedra:
+ * exact up to rounding, but its last bits may depend on where the cache
+ * started.  For decisions clearly away from a threshold (a caller allows a
+ * tolerance far above rounding) and for schedule keys; never for anything
+ * whose bits must not depend on the cache.  Returns -1 for spheres (their
+ * closed forms are as cheap), without a cache, or when the shapes may
+ * touch: use vrContact_Distance then. */
+int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
+                    vrWalkCache *cache, double *dist, vec3 *n);
+
 /* Penetration depth and direction by libccd's MPR (penetration.c): called by
  * the above when polyhedra overlap (spheres use closed forms); exposed for
  * tests.  Returns 0 when they overlap (depth >= 0, unit dir from a toward b:

@@ -17,6 +17,7 @@
 #define BISECTIONS 48
 #define TIE_SPEED 1e-9        /* m/s: points this close to the most approaching one share the impulse */
 #define CONTAIN_TOL 1e-9      /* m: support containment in the contact plane */
+#define QUICK_TOL 1e-8        /* m: the walk's distance decides only this far from d */
 
 typedef struct vrPair {
     int a, b;                 /* object ids, a < b */
@@ -63,6 +64,7 @@ struct vrOwner {
     long long checks, heap_pops;
     void (*progress)(void *ctx);
     void *progress_ctx;
+    double span_end;          /* T of the span being looked through */
 };
 
 /* ---- small containers ------------------------------------------------------ */
@@ -360,15 +362,30 @@ static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPos
 
 /* the first time in (lo, hi] with distance <= d: exactly BISECTIONS halvings,
  * the event at the upper end of the final bracket (SPEC 3.2) */
-static double bisect(vrOwner *o, vrPair *p, double lo, double hi)
+static int within_d(vrOwner *o, vrPair *p, double t)
 {
+    vrBody *A = o->body[p->a], *B = o->body[p->b];
     vrPose pa, pb;
     vrContact c;
+    double dist;
+    vec3 n;
+    vrBody_Pose(A, t, &pa);
+    vrBody_Pose(B, t, &pb);
+    if (vrContact_Quick(&A->shape, &pa, &B->shape, &pb, &p->cache, &dist, &n) == 0
+        && fabs(dist - o->p.d) > QUICK_TOL) {
+        o->checks++;
+        return dist < o->p.d;     /* clear either way: the canonical answer too */
+    }
+    query(o, p, t, 0, &pa, &pb, &c);
+    return c.dist <= o->p.d;
+}
+
+static double bisect(vrOwner *o, vrPair *p, double lo, double hi)
+{
     int i;
     for (i = 0; i < BISECTIONS; i++) {
         double mid = lo + 0.5 * (hi - lo);
-        query(o, p, mid, 0, &pa, &pb, &c);
-        if (c.dist <= o->p.d) hi = mid; else lo = mid;
+        if (within_d(o, p, mid)) hi = mid; else lo = mid;
     }
     return hi;
 }
@@ -582,6 +599,60 @@ static int impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
     return 1;
 }
 
+static int has_support(const vrBody *x, int partner);
+
+/* heap = 0 is the thesis's ablation: every pair looked at fully, every
+ * step; an inside or support pair always is (its events need the contact) */
+static int cheap_look_allowed(const vrOwner *o, const vrPair *p)
+{
+    return o->p.use_heap && !p->inside && !has_support(o->body[p->a], p->b) && !has_support(o->body[p->b], p->a);
+}
+
+/* the walk's distance when it is clear of the envelope: outside, no event,
+ * and a key from that distance (QUICK_TOL below it) */
+static int clear_by_walk(vrOwner *o, int pi, double t)
+{
+    vrPair *p = &o->pair[pi];
+    vrBody *A = o->body[p->a], *B = o->body[p->b];
+    vrPose pa, pb;
+    double dist;
+    vec3 n;
+    if (!cheap_look_allowed(o, p)) return 0;
+    vrBody_Pose(A, t, &pa);
+    vrBody_Pose(B, t, &pb);
+    if (vrContact_Quick(&A->shape, &pa, &B->shape, &pb, &p->cache, &dist, &n) != 0) return 0;
+    o->checks++;
+    if (dist <= o->p.d + QUICK_TOL) return 0;
+    p->t_check = t;
+    settle(o, pi, 0, vrSchedule_Key(A, B, t, dist - QUICK_TOL, n, o->p.d, &o->p.flight));
+    return 1;
+}
+
+/* A cheap look first: the bounding spheres about the centres are a lower
+ * bound on the distance.  When they stay clear of the envelope past the
+ * span's end, the full query could only find the pair outside with nothing
+ * to do; the spheres' key (they do not change as the bodies turn) is as
+ * valid as the full one.  A support pair always gets the full look (its
+ * support may have to end). */
+static int clear_by_spheres(vrOwner *o, int pi, double t)
+{
+    vrPair *p = &o->pair[pi];
+    vrBody *A = o->body[p->a], *B = o->body[p->b];
+    vec3 xa, xb, gap;
+    double len, key;
+    if (!cheap_look_allowed(o, p)) return 0;
+    vrBody_Position(A, t, &xa);
+    vrBody_Position(B, t, &xb);
+    gap = vec3_sub(xb, xa);
+    len = vec3_len(gap);
+    if (len - A->r_out - B->r_out <= o->p.d || len == 0) return 0;
+    key = vrSchedule_SphereKey(A, B, t, len - A->r_out - B->r_out, vec3_scale(gap, 1.0 / len), o->p.d, &o->p.flight);
+    if (key <= o->span_end) return 0;
+    p->t_check = t;
+    settle(o, pi, 0, key);
+    return 1;
+}
+
 /* Evaluates pair pi at t.  t_prev is the previous grid point (t_prev == t at
  * a span start, where no step can be bisected).  Returns 1 with *ev when the
  * pair has an event. */
@@ -591,6 +662,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     vrPose pa, pb;
     vrContact c;
     remember(o, pi, t);
+    if (clear_by_spheres(o, pi, t) || clear_by_walk(o, pi, t)) return 0;
     query(o, p, t, 0, &pa, &pb, &c);
     p->t_check = t;
     if (c.dist > o->p.d) {
@@ -699,6 +771,7 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     long k = 1;
     int i;
     o->nfound = 0;
+    o->span_end = g->T;
     span_start(o, g->t0, allow_instant);
     if (o->nfound) return take_first(o, g->t0, ev);
     while (k <= g->n) {

@@ -3,18 +3,20 @@
  * Quickhull (Barber, Dobkin & Huhdanpaa 1996, "The Quickhull algorithm for
  * convex hulls"): a triangulated hull whose faces keep the points above them
  * (conflict lists); each step takes a face's farthest point, removes the
- * faces that point sees and cones the horizon to it.  Every "is p above this
- * face" is decided exactly (Shewchuk 1997, "Adaptive precision
- * floating-point arithmetic and fast robust geometric predicates"): the
- * floating-point determinant when its error bound settles the sign, else the
- * determinant in expansion arithmetic.  So the triangulation stays exactly
- * convex whatever duplicates or coplanar clusters come in; only points
- * strictly outside become vertices, and the horizon is always one cycle.
+ * faces that point sees and cones the horizon to it.  Whether the eye sees a
+ * face is decided exactly (Shewchuk 1997, "Adaptive precision floating-point
+ * arithmetic and fast robust geometric predicates": a floating-point filter
+ * with a proven error bound, then long double, then expansion arithmetic),
+ * so the triangulation stays exactly convex and the horizon one cycle
+ * whatever duplicates or coplanar clusters come in.  A point within 1e-3 of
+ * the tolerance of the hull is dropped (it changes nothing worth a vertex).
  *
- * Then triangles whose vertices lie within tol*size of one plane are merged
- * into one polygon face (flood fill from the largest triangles), and the
- * vertices left on fewer than three faces (inside a face or on an edge) are
- * dropped.  vrPolyhedron_FromFaces builds the graph from the polygons.
+ * Then triangles whose corners lie within tol*size of one plane are merged
+ * into one polygon face, and the vertices left on fewer than three faces (on
+ * an edge or inside a face: not extreme) are dropped; vrPolyhedron_FromFaces
+ * builds the graph from the polygons and checks it.  Should points closer
+ * than the tolerance make the merge inconsistent, the whole is done again
+ * with such points merged first (see vrPolyhedron_HullTol).
  */
 #include <float.h>
 #include <stdlib.h>
@@ -173,13 +175,12 @@ typedef struct Hull {
     const vec3 *pts;
     int n;
     int *next;       /* conflict lists: the next point above the same face */
-    char *isvert;
     Face *face;
     int nface, capface;
     IntVec freeface, pending, visible, orphans, cone, dfs;
     Horizon *hz;
     int nhz, caphz;
-    double drop;     /* points less than this above the hull are dropped */
+    double drop;     /* points within this of the hull are dropped */
     int step, oom;
 } Hull;
 
@@ -284,11 +285,13 @@ static void add_conflict(Hull *h, int f, int pt, double d)
     }
 }
 
-/* does pt, seen along the normal of face F, fall on its triangle? */
+/* does pt, seen along the normal of face F, fall on its triangle?  A
+ * sliver's normal is mostly rounding (its products cancel): no answer */
 static int over_triangle(const Hull *h, const Face *F, int pt)
 {
     vec3 p = h->pts[pt];
     int i;
+    if (vec3_maxabs(F->n) <= 1e-6 * vec3_maxabs(F->nabs)) return 0;
     for (i = 0; i < 3; i++) {
         vec3 a = h->pts[F->v[i]], b = h->pts[F->v[i == 2 ? 0 : i + 1]];
         if (vec3_dot(vec3_cross(vec3_sub(b, a), vec3_sub(p, a)), F->n) < 0) return 0;
@@ -417,15 +420,15 @@ static void build_cone(Hull *h, int eye)
     }
 }
 
-/* one quickhull step: the farthest point above face f0 joins the hull */
+/* one quickhull step: the farthest point above face f0 joins the hull;
+ * -1 out of memory, RETRY when the horizon is not one cycle */
 static int add_point(Hull *h, int f0)
 {
     int eye = h->face[f0].far, k, hint = 0;
     h->step++;
-    h->isvert[eye] = 1;
     find_horizon(h, f0, eye);
     if (h->oom) return -1;
-    if (!horizon_is_cycle(h)) return -2;
+    if (!horizon_is_cycle(h)) return RETRY;
     h->orphans.n = 0;
     for (k = 0; k < h->visible.n; k++) {
         int f = h->visible.a[k], pt;
@@ -512,9 +515,8 @@ static int initial_simplex(Hull *h, double tolabs, char *err, size_t errlen)
     all[3] = new_face(h, a, c, d);
     if (h->oom) return vrGeom_Fail(err, errlen, "out of memory");
     for (f = 0; f < 4; f++) memcpy(h->face[all[f]].nb, nb[f], sizeof nb[f]);
-    h->isvert[a] = h->isvert[b] = h->isvert[c] = h->isvert[d] = 1;
     for (i = 0; i < h->n; i++)
-        if (!h->isvert[i]) assign(h, i, all, 4, &hint);
+        if (i != a && i != b && i != c && i != d) assign(h, i, all, 4, &hint);
     for (f = 0; f < 4; f++)
         if (h->face[f].head >= 0) push(h, &h->pending, f);
     return 0;
@@ -523,7 +525,6 @@ static int initial_simplex(Hull *h, double tolabs, char *err, size_t errlen)
 static void hull_free(Hull *h)
 {
     free(h->next);
-    free(h->isvert);
     free(h->face);
     free(h->freeface.a);
     free(h->pending.a);
@@ -537,15 +538,14 @@ static void hull_free(Hull *h)
 static int quickhull(Hull *h, double tolabs, char *err, size_t errlen)
 {
     h->next = malloc(sizeof *h->next * h->n);
-    h->isvert = calloc(h->n, 1);
-    if (!h->next || !h->isvert) return vrGeom_Fail(err, errlen, "out of memory");
+    if (!h->next) return vrGeom_Fail(err, errlen, "out of memory");
     if (initial_simplex(h, tolabs, err, errlen) != 0) return -1;
     while (h->pending.n > 0) {
         int f = h->pending.a[--h->pending.n], rc;
         if (h->face[f].state != FACE_ALIVE || h->face[f].head < 0) continue;
         rc = add_point(h, f);
         if (rc == -1) return vrGeom_Fail(err, errlen, "out of memory");
-        if (rc == -2) {
+        if (rc == RETRY) {
             vrGeom_Fail(err, errlen, "the horizon of point %d is not a cycle", h->face[f].far);
             return RETRY;
         }
@@ -561,7 +561,8 @@ static int quickhull(Hull *h, double tolabs, char *err, size_t errlen)
  * an edge) within the tolerance of the straight edge that replaces them,
  * and no reflex turn.  A polygon that fails is filled again at the next
  * level, 1000 times tighter, down to exact coplanarity, where the exact
- * convexity of the triangulation makes every check hold. */
+ * convexity of the triangulation makes the checks hold (but for slivers,
+ * whose normals are rounding: the RETRY with close points merged). */
 
 enum { EXACT_LEVEL = 3 };
 static const double level_scale[EXACT_LEVEL] = {1, 1e-3, 1e-6};

@@ -166,7 +166,7 @@ static double key_for(const vrClosing *k, vec3 n, const vrBody *a, const vrBody 
     return fmax(key_any_direction(k, a, b), key_along_normal(k, n, a, b));
 }
 
-double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)
+static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f, int turning)
 {
     vrClosing whole, rate;
     vec3 va, vb;
@@ -186,7 +186,17 @@ double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, doubl
      * holds, so the later time does. */
     rate = whole;
     whole.spin = 0;
-    whole.room -= spin_margin(a) + spin_margin(b);
-    rate.spin = spin_rate(a) + spin_rate(b);
+    whole.room -= turning ? spin_margin(a) + spin_margin(b) : 0;
+    rate.spin = turning ? spin_rate(a) + spin_rate(b) : 0;
     return t + fmax(key_for(&whole, n, a, b), key_for(&rate, n, a, b));
+}
+
+double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)
+{
+    return key(a, b, t, dist, n, d, f, 1);
+}
+
+double vrSchedule_SphereKey(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)
+{
+    return key(a, b, t, dist, n, d, f, 0);
 }

@@ -28,5 +28,9 @@ long vrSchedule_FirstPointAtOrAfter(const vrGrid *g, double t);
  * again until the speed caps could turn it round.  Returns t when the pair
  * is due now, INFINITY when it can never close. */
 double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f);
+/* The same from the bounding spheres about the centres (a sphere's own),
+ * which do not change as the bodies turn: dist is the distance between the
+ * spheres and n the direction between the centres. */
+double vrSchedule_SphereKey(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f);
 
 #endif

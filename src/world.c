@@ -1025,7 +1025,7 @@ int vrWorld_GetMesh(vrWorld *w, vrObjectId id, vrMesh *m)
     return 0;
 }
 
-void vrWorld_NoteRenderTime(vrWorld *w, double ms) { w->render_ms = ms; }
+void vrWorld_NoteRenderTime(vrWorld *w, double ms) { w->render_ms += ms; }
 
 void vrWorld_GetStats(const vrWorld *cw, vrStats *st)
 {
