@@ -35,7 +35,7 @@ BENCH_SRC  := $(wildcard tests/bench_*.c)
 PRODUCTS = libvroc.a vroc vroc-gp vroc-render.so
 
 .PHONY: all deps check check-asan demo bench install clean
-.SECONDARY: $(LCM_GEN)
+.SECONDARY:
 .DELETE_ON_ERROR:
 
 all: $(PRODUCTS)

@@ -184,10 +184,11 @@ static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d,
     /* turning bodies: the thesis takes (R - r) off the distance at once;
      * turning at omega also cannot close faster than omega R.  Each bound
      * holds, so the later time does. */
-    rate = whole;
     whole.spin = 0;
-    whole.room -= turning ? spin_margin(a) + spin_margin(b) : 0;
-    rate.spin = turning ? spin_rate(a) + spin_rate(b) : 0;
+    if (!turning || (spin_margin(a) == 0 && spin_margin(b) == 0)) return t + key_for(&whole, n, a, b);
+    rate = whole;
+    whole.room -= spin_margin(a) + spin_margin(b);
+    rate.spin = spin_rate(a) + spin_rate(b);
     return t + fmax(key_for(&whole, n, a, b), key_for(&rate, n, a, b));
 }
 
