@@ -1125,7 +1125,8 @@ static int grid_alloc(Grid *g, const vec3 *pts, int n, double r)
     for (i = 0; i < g->cap; i++) g->head[i] = -1;
     g->r = r;
     g->lo = pts[0];
-    for (i = 1; i < n; i++) g->lo = vec3_make(fmin(g->lo.x, pts[i].x), fmin(g->lo.y, pts[i].y), fmin(g->lo.z, pts[i].z));
+    for (i = 1; i < n; i++)
+        g->lo = vec3_make(fmin(g->lo.x, pts[i].x), fmin(g->lo.y, pts[i].y), fmin(g->lo.z, pts[i].z));
     return 0;
 }
 

@@ -32,14 +32,50 @@ typedef struct Reader {
     int ntok, captok;
 } Reader;
 
+/* The arrays grow with the lines read, never trusting the counts: a file
+ * claiming 10^8 vertices in three lines costs three lines of memory. */
 typedef struct Off {
     int nv, nf;
     vec3 *v;
     int *vline;          /* the line each vertex is on */
     int *fstart, *fline; /* faces: CSR over fvert, and their lines */
     int *fvert;
-    int nfvert, capfvert;
+    int nfvert;
+    int cap[5];          /* of v, vline, fstart, fline, fvert */
 } Off;
+
+/* a, with room for need items of size sz (capacity *cap, doubled as it
+ * grows); NULL when memory runs out, a then still valid */
+static void *room(void *a, int *cap, int need, size_t sz)
+{
+    int c = *cap;
+    void *b;
+    if (need <= c) return a;
+    while (c < need) c = c ? 2 * c : 64;
+    b = realloc(a, sz * c);
+    if (b) *cap = c;
+    return b;
+}
+
+/* room for vertex i and its line number */
+static int room_vertex(Off *o, int i)
+{
+    vec3 *v = room(o->v, &o->cap[0], i + 1, sizeof *o->v);
+    int *line = v ? room(o->vline, &o->cap[1], i + 1, sizeof *o->vline) : NULL;
+    if (v) o->v = v;
+    if (line) o->vline = line;
+    return v && line ? 0 : -1;
+}
+
+/* room for face f's start (and the end after it) and line number */
+static int room_face(Off *o, int f)
+{
+    int *start = room(o->fstart, &o->cap[2], f + 2, sizeof *o->fstart);
+    int *line = start ? room(o->fline, &o->cap[3], f + 1, sizeof *o->fline) : NULL;
+    if (start) o->fstart = start;
+    if (line) o->fline = line;
+    return start && line ? 0 : -1;
+}
 
 static void off_free(Off *o)
 {
@@ -90,6 +126,15 @@ static int fail_at(const Reader *r, char *err, size_t errlen, const char *what)
     return vrGeom_Fail(err, errlen, "%s:%d: %s", r->path, r->line, what);
 }
 
+/* the next line with a word on it, which must be there: 0, or -1 saying
+ * `what` is missing (or that memory ran out) */
+static int need_line(Reader *r, const char *what, char *err, size_t errlen)
+{
+    int rc = next_line(r);
+    if (rc > 0) return 0;
+    return rc < 0 ? vrGeom_Fail(err, errlen, "out of memory") : fail_at(r, err, errlen, what);
+}
+
 static int parse_int(const char *s, long lo, long hi, int *x)
 {
     char *end;
@@ -112,21 +157,16 @@ static int parse_double(const char *s, double *x)
  * there are none, the next line is */
 static int read_header(Reader *r, Off *o, char *err, size_t errlen)
 {
-    int first = 1, ne, rc = next_line(r);
+    int first = 1, ne;
     char msg[160];
-    if (rc <= 0)
-        return rc < 0 ? vrGeom_Fail(err, errlen, "out of memory")
-                      : fail_at(r, err, errlen, "empty file, expected the header 'OFF'");
+    if (need_line(r, "empty file, expected the header 'OFF'", err, errlen) != 0) return -1;
     if (strcmp(r->tok[0], "OFF") != 0) {
         snprintf(msg, sizeof msg, "expected the header 'OFF', got '%.40s'", r->tok[0]);
         return fail_at(r, err, errlen, msg);
     }
     if (r->ntok == 1) {
         first = 0;
-        rc = next_line(r);
-        if (rc <= 0)
-            return rc < 0 ? vrGeom_Fail(err, errlen, "out of memory")
-                          : fail_at(r, err, errlen, "expected the counts 'vertices faces edges'");
+        if (need_line(r, "expected the counts 'vertices faces edges'", err, errlen) != 0) return -1;
     }
     if (r->ntok - first < 2 || r->ntok - first > 3 || parse_int(r->tok[first], 0, OFF_MAX_COUNT, &o->nv) != 0
         || parse_int(r->tok[first + 1], 0, OFF_MAX_COUNT, &o->nf) != 0
@@ -147,23 +187,18 @@ static int read_header(Reader *r, Off *o, char *err, size_t errlen)
 static int expect_line(Reader *r, const char *what, int index, int count, char *err, size_t errlen)
 {
     char msg[160];
-    int rc = next_line(r);
-    if (rc < 0) return vrGeom_Fail(err, errlen, "out of memory");
-    if (rc > 0) return 0;
     snprintf(msg, sizeof msg, "unexpected end of file: %s %d of %d is missing", what, index, count);
-    return fail_at(r, err, errlen, msg);
+    return need_line(r, msg, err, errlen);
 }
 
 static int read_vertices(Reader *r, Off *o, char *err, size_t errlen)
 {
     char msg[160];
     int i, k;
-    o->v = malloc(sizeof *o->v * o->nv);
-    o->vline = malloc(sizeof *o->vline * o->nv);
-    if (!o->v || !o->vline) return vrGeom_Fail(err, errlen, "out of memory");
     for (i = 0; i < o->nv; i++) {
         double x[3];
         if (expect_line(r, "vertex", i, o->nv, err, errlen) != 0) return -1;
+        if (room_vertex(o, i) != 0) return vrGeom_Fail(err, errlen, "out of memory");
         if (r->ntok != 3) {
             snprintf(msg, sizeof msg, "vertex %d: expected 3 coordinates, got %d words", i, r->ntok);
             return fail_at(r, err, errlen, msg);
@@ -180,24 +215,12 @@ static int read_vertices(Reader *r, Off *o, char *err, size_t errlen)
     return 0;
 }
 
-static int add_index(Off *o, int v)
-{
-    if (o->nfvert == o->capfvert) {
-        int cap = o->capfvert ? 2 * o->capfvert : 256, *a = realloc(o->fvert, sizeof *a * cap);
-        if (!a) return -1;
-        o->fvert = a;
-        o->capfvert = cap;
-    }
-    o->fvert[o->nfvert++] = v;
-    return 0;
-}
-
 /* one face line: k, then k distinct indices (seen[]: per vertex, the last
  * face that used it), then perhaps a colour */
 static int read_face(Reader *r, Off *o, int f, int *seen, char *err, size_t errlen)
 {
     char msg[200];
-    int k, j, v;
+    int k, j, v, *fvert;
     if (parse_int(r->tok[0], 3, o->nv, &k) != 0) {
         snprintf(msg, sizeof msg, "face %d: bad vertex count '%.40s' (3..%d)", f, r->tok[0], o->nv);
         return fail_at(r, err, errlen, msg);
@@ -216,27 +239,32 @@ static int read_face(Reader *r, Off *o, int f, int *seen, char *err, size_t errl
             return fail_at(r, err, errlen, msg);
         }
         seen[v] = f;
-        if (add_index(o, v) != 0) return vrGeom_Fail(err, errlen, "out of memory");
+        fvert = room(o->fvert, &o->cap[4], o->nfvert + 1, sizeof *o->fvert);
+        if (!fvert) return vrGeom_Fail(err, errlen, "out of memory");
+        o->fvert = fvert;
+        o->fvert[o->nfvert++] = v;
     }
     return 0;
 }
 
 static int read_faces(Reader *r, Off *o, char *err, size_t errlen)
 {
-    int f, rc = 0, *seen = malloc(sizeof *seen * o->nv);
-    o->fstart = malloc(sizeof *o->fstart * (o->nf + 1));
-    o->fline = malloc(sizeof *o->fline * o->nf);
-    if (!seen || !o->fstart || !o->fline) rc = vrGeom_Fail(err, errlen, "out of memory");
+    int f, rc = 0, *seen = malloc(sizeof *seen * o->nv); /* the vertices are all read: nv is real */
+    if (!seen) rc = vrGeom_Fail(err, errlen, "out of memory");
     for (f = 0; rc == 0 && f < o->nv; f++) seen[f] = -1;
     for (f = 0; rc == 0 && f < o->nf; f++) {
-        o->fstart[f] = o->nfvert;
         rc = expect_line(r, "face", f, o->nf, err, errlen);
+        if (rc == 0 && room_face(o, f) != 0) rc = vrGeom_Fail(err, errlen, "out of memory");
+        if (rc == 0) o->fstart[f] = o->nfvert;
         if (rc == 0) rc = read_face(r, o, f, seen, err, errlen);
         if (rc == 0) o->fline[f] = r->line;
     }
     if (rc == 0) o->fstart[o->nf] = o->nfvert;
-    if (rc == 0 && (rc = next_line(r)) != 0)
-        rc = rc < 0 ? vrGeom_Fail(err, errlen, "out of memory") : fail_at(r, err, errlen, "unexpected data after the last face");
+    if (rc == 0) {
+        int more = next_line(r);
+        if (more < 0) rc = vrGeom_Fail(err, errlen, "out of memory");
+        if (more > 0) rc = fail_at(r, err, errlen, "unexpected data after the last face");
+    }
     free(seen);
     return rc;
 }
@@ -265,7 +293,10 @@ static int read_off(const char *path, Off *o, char *err, size_t errlen)
 /* ---- convexity ------------------------------------------------------------ */
 
 /* how far x is above the plane of hull face f (x in the hull's frame) */
-static double above_face(const vrPolyhedron *p, int f, vec3 x) { return vec3_dot(p->face_normal[f], x) - p->face_offset[f]; }
+static double above_face(const vrPolyhedron *p, int f, vec3 x)
+{
+    return vec3_dot(p->face_normal[f], x) - p->face_offset[f];
+}
 
 /* every vertex that is not a hull vertex must lie on the hull's surface */
 static int check_vertices(const Off *o, const vrPolyhedron *p, const int *hullv, double tol, const char *path,
@@ -320,9 +351,8 @@ static int check_faces(const Off *o, const vrPolyhedron *p, const int *hullv, do
     for (g = 0; g < o->nf; g++) {
         double gap = best_gap(o, p, hullv, g);
         if (gap > tol)
-            return vrGeom_Fail(err, errlen,
-                               "%s:%d: not convex (face %d is not on the hull: it is %.3g off the nearest hull face's plane)",
-                               path, o->fline[g], g, gap);
+            return vrGeom_Fail(err, errlen, "%s:%d: not convex (face %d is not on the hull: "
+                               "it is %.3g off the nearest hull face's plane)", path, o->fline[g], g, gap);
     }
     return 0;
 }

@@ -5,8 +5,9 @@
  * everything the closest-feature walk needs (the conventions are in
  * polyhedron.h): half-edge twins, edges with their left/right faces, the
  * edges about each vertex counter-clockwise, and the face planes.  The cube
- * and the sphere mesh are written down directly; the superquadric is the
- * convex hull (hull.c) of its samples.
+ * and the sphere mesh are written down directly (and not recentred: they
+ * are centred by symmetry); the superquadric is the convex hull (hull.c) of
+ * its samples, recentred like any hull.
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -286,7 +287,8 @@ static int check_loops(int nv, const int *face_start, const int *face_vert, int 
     used = calloc(nv, 1);
     if (!used) return vrGeom_Fail(err, errlen, "out of memory");
     for (f = 0; f < nf && rc == 0; f++) {
-        if (face_start[f + 1] - face_start[f] < 3) rc = vrGeom_Fail(err, errlen, "face %d has fewer than 3 vertices", f);
+        if (face_start[f + 1] - face_start[f] < 3)
+            rc = vrGeom_Fail(err, errlen, "face %d has fewer than 3 vertices", f);
         for (k = face_start[f]; k < face_start[f + 1] && rc == 0; k++) {
             if (face_vert[k] < 0 || face_vert[k] >= nv)
                 rc = vrGeom_Fail(err, errlen, "face %d: vertex index %d out of range", f, face_vert[k]);
@@ -330,7 +332,8 @@ static int from_faces(const vec3 *vert, int nv, const int *face_start, const int
     memcpy(p->vert, vert, sizeof *vert * nv);
     memcpy(p->face_start, face_start, sizeof *face_start * (nf + 1));
     memcpy(p->face_vert, face_vert, sizeof *face_vert * nh);
-    if (build_graph(p, err, errlen) != 0 || (recentre && centre(p, err, errlen) != 0) || compute_planes(p, err, errlen) != 0
+    if (build_graph(p, err, errlen) != 0 || (recentre && centre(p, err, errlen) != 0)
+        || compute_planes(p, err, errlen) != 0
         || check_convex(p, 4 * tol * vrGeom_Size(p->vert, nv), err, errlen) != 0) {
         vrPolyhedron_Free(p);
         return -1;

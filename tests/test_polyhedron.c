@@ -637,6 +637,7 @@ static int test_off_refuses_missing_files_directories_and_malformed_text(void)
     ENSURE(off_fails("twice.off", "OFF\n4 4 6\n" TETRA_VERTS "3 0 2 0\n3 0 1 3\n3 0 3 2\n3 1 2 3\n", ":7: face 0: vertex 0 appears twice") == 0);
     ENSURE(off_fails("trunc.off", "OFF\n4 4 6\n" TETRA_VERTS "3 0 2 1\n3 0 1 3\n", "unexpected end of file: face 2 of 4") == 0);
     ENSURE(off_fails("truncv.off", "OFF\n4 4 6\n0 0 0\n", "unexpected end of file: vertex 1 of 4") == 0);
+    ENSURE(off_fails("bogus.off", "OFF 100000000 4 0\n0 0 0\n1 0 0\n", "vertex 2 of 100000000 is missing") == 0);
     ENSURE(off_fails("extra.off", "OFF\n4 4 6\n" TETRA_VERTS TETRA_FACES "3 1 2 3\n", ":11: unexpected data after the last face") == 0);
     ENSURE(off_fails("flat.off", "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n" TETRA_FACES, "coplanar") == 0);
     return 0;
@@ -688,7 +689,7 @@ static void remove_tmpdir(void)
 {
     static const char *names[] = {"split.off", "empty.off", "hdr.off", "counts.off", "few.off", "num.off", "nan.off",
                                   "inf.off", "huge.off", "two.off", "index.off", "neg.off", "short.off", "twice.off",
-                                  "trunc.off", "truncv.off", "extra.off", "flat.off", "prism.off"};
+                                  "trunc.off", "truncv.off", "bogus.off", "extra.off", "flat.off", "prism.off"};
     char path[128];
     size_t i;
     for (i = 0; i < sizeof names / sizeof *names; i++) {
