@@ -35,7 +35,7 @@ BENCH_SRC  := $(wildcard tests/bench_*.c)
 PRODUCTS = libvroc.a vroc vroc-gp vroc-render.so
 
 .PHONY: all deps check check-asan demo bench install clean
-.SECONDARY:
+.SECONDARY: $(LCM_GEN)
 .DELETE_ON_ERROR:
 
 all: $(PRODUCTS)
@@ -58,14 +58,16 @@ $(1)_OBJ := $$(patsubst %.c,build/$(1)/%.o,$$(LIB_SRC)) \
             $$(patsubst build/gen/%.c,build/$(1)/gen/%.o,$$(LCM_GEN))
 $(1)_TESTS := $$(patsubst tests/%.c,build/$(1)/tests/%,$$(TEST_SRC))
 $(1)_BENCH := $$(patsubst tests/%.c,build/$(1)/tests/%,$$(BENCH_SRC))
+# kept, so that make check's last line is its summary, not make's clean-up
+.SECONDARY: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC) $$(BENCH_SRC))
 
 build/$(1)/%.o: %.c | $$(LCM_GEN) deps
 	@mkdir -p $$(@D)
 	$$(CC) $$(WARN) $$(DEFS) $$(INCS) -Ibuild/gen $$($(1)_CFLAGS) -MMD -MP -c $$< -o $$@
 
-build/$(1)/gen/%.o: build/gen/%.c
+build/$(1)/gen/%.o: build/gen/%.c | $$(LCM_GEN)
 	@mkdir -p $$(@D)
-	$$(CC) $$(WARN) -Wno-pedantic -Wno-format -Wno-unused-parameter $$(DEFS) -Ibuild/gen $$($(1)_CFLAGS) -c $$< -o $$@
+	$$(CC) $$(WARN) -Wno-pedantic -Wno-format -Wno-unused-parameter $$(DEFS) -Ibuild/gen $$($(1)_CFLAGS) -MMD -MP -c $$< -o $$@
 
 build/$(1)/libvroc.a: $$($(1)_OBJ)
 	rm -f $$@
@@ -87,7 +89,7 @@ build/$(1)/tests/%: build/$(1)/tests/%.o build/$(1)/libvroc.a
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
 
 $(1)-all: build/$(1)/libvroc.a build/$(1)/vroc build/$(1)/vroc-gp build/$(1)/vroc-render.so $$($(1)_TESTS)
--include $$($(1)_OBJ:.o=.d) $$(patsubst %.c,build/$(1)/%.d,$$(SHELL_SRC) $$(TEST_SRC) $$(BENCH_SRC))
+-include $$($(1)_OBJ:.o=.d) $$(patsubst %.c,build/$(1)/%.d,$$(SHELL_SRC) $$(TEST_SRC) $$(BENCH_SRC) shell/gp_main.c)
 endef
 $(foreach v,rel asan,$(eval $(call VARIANT,$(v))))
 

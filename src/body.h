@@ -15,8 +15,9 @@
 #define VR_MAX_SUPPORTS 8
 
 /* a body resting on (or sliding over) a partner: n points from the partner
- * toward the body */
-typedef struct vrSupport { int partner; vec3 n; } vrSupport;
+ * toward the body.  joint: the support began with others together (the
+ * centre of mass over their regions together, not over this one alone) */
+typedef struct vrSupport { int partner; vec3 n; int joint; } vrSupport;
 
 /* the anchor of free flight (thesis 3.2.3, SPEC 3.2) */
 typedef struct vrMotion {

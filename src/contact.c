@@ -851,6 +851,69 @@ static int contact(const vrShape *a, const vrPose *pa, const vrShape *b, const v
     return poly_contact(a, pa, b, pb, d, cache, out);
 }
 
+/* ---- support containment (SPEC 3.1) ------------------------------------- */
+
+typedef struct { double x, y; } vrP2;
+
+static int cmp_p2(const void *a, const void *b)
+{
+    const vrP2 *p = a, *q = b;
+    return p->x < q->x ? -1 : p->x > q->x ? 1 : p->y < q->y ? -1 : p->y > q->y;
+}
+
+static double cross2(vrP2 o, vrP2 a, vrP2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+/* distance from the origin to segment ab */
+static double seg_dist(vrP2 a, vrP2 b)
+{
+    double ex = b.x - a.x, ey = b.y - a.y, l2 = ex * ex + ey * ey;
+    double s = l2 > 0 ? -(a.x * ex + a.y * ey) / l2 : 0;
+    s = s < 0 ? 0 : s > 1 ? 1 : s;
+    return hypot(a.x + s * ex, a.y + s * ey);
+}
+
+/* Andrew's monotone chain, then edge tests */
+int vrRegion_Contains(const vec3 *pts, int n, vec3 nrm, vec3 q, double tol)
+{
+    vec3 t1 = vec3_orthogonal(nrm), t2 = vec3_cross(nrm, t1);
+    vrP2 small[VR_REGION_MAX], hsmall[2 * VR_REGION_MAX], *p = small, *h = hsmall;
+    int i, k = 0, lower, inside = 1;
+    if (n > VR_REGION_MAX) {       /* several supports' regions together */
+        p = malloc((size_t)n * sizeof *p);
+        h = malloc((size_t)(2 * n) * sizeof *h);
+        if (!p || !h) {
+            free(p == small ? NULL : p);
+            free(h == hsmall ? NULL : h);
+            return 0;
+        }
+    }
+    for (i = 0; i < n; i++) {
+        vec3 d = vec3_sub(pts[i], q);
+        p[i].x = vec3_dot(d, t1);
+        p[i].y = vec3_dot(d, t2);
+    }
+    qsort(p, (size_t)n, sizeof *p, cmp_p2);
+    for (i = 0; i < n; i++) {
+        while (k >= 2 && cross2(h[k - 2], h[k - 1], p[i]) <= 0) k--;
+        h[k++] = p[i];
+    }
+    for (i = n - 2, lower = k + 1; i >= 0; i--) {
+        while (k >= lower && cross2(h[k - 2], h[k - 1], p[i]) <= 0) k--;
+        h[k++] = p[i];
+    }
+    if (k > 1) k--;                                /* the last point repeats the first */
+    if (k == 1) inside = hypot(h[0].x, h[0].y) <= tol;
+    else if (k == 2) inside = seg_dist(h[0], h[1]) <= tol;
+    for (i = 0; k > 2 && i < k && inside; i++) {
+        vrP2 a = h[i], b = h[(i + 1) % k], o = {0, 0};
+        double len = hypot(b.x - a.x, b.y - a.y);
+        if (len > 0 && cross2(a, b, o) / len < -tol) inside = 0;
+    }
+    if (p != small) free(p);
+    if (h != hsmall) free(h);
+    return inside;
+}
+
 int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
                     vrWalkCache *cache, double *dist, vec3 *n)
 {

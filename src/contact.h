@@ -93,6 +93,10 @@ int vrContact_Region(const vrShape *a, const vrPose *pa, const vrShape *b, const
 int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
                     vrWalkCache *cache, double *dist, vec3 *n);
 
+/* Is q inside the convex hull of pts (n of them) seen along nrm, within tol?  (SPEC 3.1: a support's centre of mass over
+ * its contact region.) */
+int vrRegion_Contains(const vec3 *pts, int n, vec3 nrm, vec3 q, double tol);
+
 /* Penetration depth and direction by libccd's MPR (penetration.c): called by
  * the above when polyhedra overlap (spheres use closed forms); exposed for
  * tests.  Returns 0 when they overlap (depth >= 0, unit dir from a toward b:

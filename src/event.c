@@ -76,3 +76,22 @@ void vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f)
     if (st->raw) vrBody_Restore(b, st->t, st->x, st->v, st->q, st->L, f);
     else vrBody_Anchor(b, st->t, st->x, st->v, st->q, st->L, f);
 }
+
+vrCandidate *vrCandidates_Add(vrCandidates *l)
+{
+    if (l->n == l->cap) {
+        int cap = l->cap ? 2 * l->cap : 8;
+        vrCandidate *nc = realloc(l->c, (size_t)cap * sizeof *nc);
+        if (!nc) return NULL;
+        l->c = nc;
+        l->cap = cap;
+    }
+    return &l->c[l->n++];
+}
+
+void vrCandidates_Free(vrCandidates *l)
+{
+    free(l->c);
+    l->c = NULL;
+    l->n = l->cap = 0;
+}

@@ -50,6 +50,21 @@ typedef struct vrBodyState {
 
 typedef struct vrUpdate { int n, cap; vrBodyState *body; } vrUpdate;
 
+/* A contact that could help carry a body that no single contact carries
+ * (a plank across two tables): reported at a frame end (SPEC 3.1). */
+typedef struct vrCandidate {
+    int body, partner;
+    vec3 n;                    /* from the partner toward the body */
+    vec3 partner_velocity;     /* of the partner's material point at the region's centre */
+    int npoints;
+    vec3 point[VR_REGION_MAX];
+} vrCandidate;
+
+typedef struct vrCandidates { int n, cap; vrCandidate *c; } vrCandidates;
+
+vrCandidate *vrCandidates_Add(vrCandidates *l);
+void vrCandidates_Free(vrCandidates *l);
+
 void vrUpdate_Init(vrUpdate *u);
 void vrUpdate_Free(vrUpdate *u);
 /* the slot of body id in u, added as a capture of b at time t if absent */

@@ -450,62 +450,12 @@ static void impulse_event(vrOwner *o, vrEvent *ev, int kind, double t, const vrP
     ev->e = restitution(o, p, -ap->umin);
 }
 
-typedef struct { double x, y; } vrP2;
-
-static int cmp_p2(const void *a, const void *b)
-{
-    const vrP2 *p = a, *q = b;
-    return p->x < q->x ? -1 : p->x > q->x ? 1 : p->y < q->y ? -1 : p->y > q->y;
-}
-
-static double cross2(vrP2 o, vrP2 a, vrP2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
-
-/* distance from the origin to segment ab */
-static double seg_dist(vrP2 a, vrP2 b)
-{
-    double ex = b.x - a.x, ey = b.y - a.y, l2 = ex * ex + ey * ey;
-    double s = l2 > 0 ? -(a.x * ex + a.y * ey) / l2 : 0;
-    s = s < 0 ? 0 : s > 1 ? 1 : s;
-    return hypot(a.x + s * ex, a.y + s * ey);
-}
-
-/* is q inside the convex hull of the region points (all on the plane normal
- * to nrm), within CONTAIN_TOL?  Andrew's monotone chain, then edge tests. */
-static int region_contains(const vec3 *pts, int n, vec3 nrm, vec3 q)
-{
-    vec3 t1 = vec3_orthogonal(nrm), t2 = vec3_cross(nrm, t1);
-    vrP2 p[VR_REGION_MAX], h[2 * VR_REGION_MAX];
-    int i, k = 0, lower;
-    for (i = 0; i < n; i++) {
-        vec3 d = vec3_sub(pts[i], q);
-        p[i].x = vec3_dot(d, t1);
-        p[i].y = vec3_dot(d, t2);
-    }
-    qsort(p, (size_t)n, sizeof *p, cmp_p2);
-    for (i = 0; i < n; i++) {
-        while (k >= 2 && cross2(h[k - 2], h[k - 1], p[i]) <= 0) k--;
-        h[k++] = p[i];
-    }
-    for (i = n - 2, lower = k + 1; i >= 0; i--) {
-        while (k >= lower && cross2(h[k - 2], h[k - 1], p[i]) <= 0) k--;
-        h[k++] = p[i];
-    }
-    if (k > 1) k--;                                /* the last point repeats the first */
-    if (k == 1) return hypot(h[0].x, h[0].y) <= CONTAIN_TOL;
-    if (k == 2) return seg_dist(h[0], h[1]) <= CONTAIN_TOL;
-    for (i = 0; i < k; i++) {
-        vrP2 a = h[i], b = h[(i + 1) % k], o = {0, 0};
-        double len = hypot(b.x - a.x, b.y - a.y);
-        if (len > 0 && cross2(a, b, o) / len < -CONTAIN_TOL) return 0;
-    }
-    return 1;
-}
-
+/* 0: partner does not support x; 1: alone; 2: together with others */
 static int has_support(const vrBody *x, int partner)
 {
     int i;
     for (i = 0; i < x->nsupport; i++)
-        if (x->support[i].partner == partner) return 1;
+        if (x->support[i].partner == partner) return x->support[i].joint ? 2 : 1;
     return 0;
 }
 
@@ -516,15 +466,16 @@ static int has_support(const vrBody *x, int partner)
  * region (on a level support this is the projection along the force; on a
  * slope it is where a frictionless reaction can act) */
 static int supports(const vrOwner *o, const vrBody *x, const vrBody *y, vec3 n_yx, const vrPose *px,
-                    const vrContact *c, const vrApproach *ap)
+                    const vrContact *c, const vrApproach *ap, int joint)
 {
     vec3 g = o->p.flight.accel, q;
     double gl = vec3_len(g);
     if (frozen(x) || !(frozen(y) || y->nsupport > 0) || c->npoints == 0) return 0;
     if (gl == 0 || vec3_dot(g, n_yx) > -1e-6 * gl) return 0;
     if (ap->umin < -VR_V_EPS || ap->umax > VR_V_EPS) return 0;
+    if (joint) return 1;    /* the regions together are checked at frame ends (rest.c) */
     q = vec3_madd(px->p, vec3_dot(vec3_sub(c->point[0], px->p), n_yx), n_yx);
-    return region_contains(c->point, c->npoints, n_yx, q);
+    return vrRegion_Contains(c->point, c->npoints, n_yx, q, CONTAIN_TOL);
 }
 
 static int support_event(vrEvent *ev, int kind, double t, const vrPair *p, const vrContact *c,
@@ -548,8 +499,8 @@ static int support_change(vrOwner *o, vrEvent *ev, double t, const vrPair *p, co
         vec3 n_yx = side ? c->n : vec3_neg(c->n);
         int now, was;
         if (frozen(o->body[x])) continue;
-        now = supports(o, o->body[x], o->body[y], n_yx, side ? pb : pa, c, ap);
         was = has_support(o->body[x], y);
+        now = supports(o, o->body[x], o->body[y], n_yx, side ? pb : pa, c, ap, was == 2);
         if (was && !now) return support_event(ev, VR_EV_SUPPORT_END, t, p, c, x, y, n_yx, ap->region_centre);
         if (!was && now && o->body[x]->nsupport < VR_MAX_SUPPORTS)
             return support_event(ev, VR_EV_SUPPORT_BEGIN, t, p, c, x, y, n_yx, ap->region_centre);
@@ -786,6 +737,49 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     return 0;
 }
 
+/* ---- several supports at once ---------------------------------------------------- */
+
+static int candidate(vrOwner *o, const vrPair *p, int side, double t, vrCandidates *out)
+{
+    int x = side ? p->b : p->a, y = side ? p->a : p->b;
+    vrBody *Y = o->body[y];
+    vec3 g = o->p.flight.accel, n_yx;
+    vrPose pa, pb, py;
+    vrContact c;
+    vrApproach ap;
+    vrCandidate *k;
+    if (!(frozen(Y) || Y->nsupport > 0) || vec3_len2(g) == 0) return 0;
+    query(o, (vrPair *)p, t, 1, &pa, &pb, &c);
+    n_yx = side ? c.n : vec3_neg(c.n);
+    if (c.npoints == 0 || vec3_dot(g, n_yx) > -1e-6 * vec3_len(g)) return 0;
+    approach(o, p, t, &pa, &pb, &c, &ap);
+    if (ap.umin < -o->v_rest || ap.umax > o->v_rest) return 0;
+    k = vrCandidates_Add(out);
+    if (!k) return -1;
+    k->body = x;
+    k->partner = y;
+    k->n = n_yx;
+    py = side ? pa : pb;
+    k->partner_velocity = vrBody_PointVelocity(Y, t, &py, ap.region_centre);
+    k->npoints = c.npoints;
+    memcpy(k->point, c.point, (size_t)c.npoints * sizeof c.point[0]);
+    return 0;
+}
+
+int vrOwner_SupportCandidates(vrOwner *o, double t, const unsigned char *want, int nwant, vrCandidates *out)
+{
+    int i, side;
+    for (i = 0; i < o->npair; i++) {
+        const vrPair *p = &o->pair[i];
+        if (!p->inside || !p->scheduled) continue;
+        for (side = 0; side < 2; side++) {
+            int x = side ? p->b : p->a;
+            if (x < nwant && want[x] && candidate(o, p, side, t, out) != 0) return -1;
+        }
+    }
+    return 0;
+}
+
 /* ---- start-up overlap check ---------------------------------------------------- */
 
 int vrOwner_Overlapping(vrOwner *o, double t, double tol, int (*out)[2], int max)
@@ -893,6 +887,7 @@ static int respond_support(vrOwner *o, const vrEvent *ev, vrUpdate *up)
         st->v = vec3_madd(st->v, -vec3_dot(ev->n, vec3_sub(st->v, uy)), ev->n);
         st->support[st->nsupport].partner = ev->partner;
         st->support[st->nsupport].n = ev->n;
+        st->support[st->nsupport].joint = 0;
         st->nsupport++;
         return 0;
     }

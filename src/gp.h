@@ -68,6 +68,12 @@ void vrOwner_Advance(vrOwner *o, double t);
 /* the new states of the bodies an event changes; -1 if the solve fails */
 int vrOwner_Respond(vrOwner *o, const vrEvent *ev, vrUpdate *up);
 void vrOwner_Stats(const vrOwner *o, vrOwnerStats *s);
+/* Frame end: the contacts that could carry a body no single contact
+ * carries — for each body with want[id] set (ids below nwant): inside pairs
+ * against a static, resting or supported partner that the force presses
+ * it onto, with no region point moving along the normal faster than the
+ * no-bounce speed sqrt(2|a|d).  Appends to out; -1 on no memory. */
+int vrOwner_SupportCandidates(vrOwner *o, double t, const unsigned char *want, int nwant, vrCandidates *out);
 /* fn(ctx) is called every few hundred pair evaluations during a look-ahead
  * (a worker sends heartbeats from it while it cannot answer) */
 void vrOwner_SetProgress(vrOwner *o, void (*fn)(void *ctx), void *ctx);

@@ -10,7 +10,11 @@
  */
 #include "world.h"
 
+#include <stdlib.h>
+#include <string.h>
+
 #define REST_DISPLACEMENT 1e-4   /* m per frame */
+#define CONTAIN_TOL 1e-9         /* m */
 #define REST_ROTATION 1e-3       /* rad per frame */
 
 static const vrBodyState *in_update(const vrUpdate *up, int id)
@@ -96,4 +100,135 @@ void vrRest_RememberFramePoses(vrWorld *w)
         o->have_frame_pose = 1;
         o->body.hit = 0;
     }
+}
+
+/* ---- several supports at once ------------------------------------------------------ */
+
+static int joint_supports(const vrBody *b)
+{
+    int i, k = 0;
+    for (i = 0; i < b->nsupport; i++) k += b->support[i].joint;
+    return k;
+}
+
+/* bodies no single contact carries that an impulse hit this frame (they may
+ * be lying across several supports), and bodies carried by several
+ * contacts together (are they still?) */
+static unsigned char *wanted(const vrWorld *w, int *count)
+{
+    unsigned char *want = calloc((size_t)w->nobj + 1, 1);
+    int i;
+    *count = 0;
+    for (i = 0; want && i < w->nobj; i++) {
+        const vrBody *b;
+        if (!w->obj[i] || !w->obj[i]->live) continue;
+        b = &w->obj[i]->body;
+        if (b->is_static || b->resting) continue;
+        if (!((b->nsupport == 0 && b->hit) || joint_supports(b) > 0)) continue;
+        want[i] = 1;
+        (*count)++;
+    }
+    return want;
+}
+
+static int by_body(const void *x, const void *y)
+{
+    const vrCandidate *a = x, *b = y;
+    if (a->body != b->body) return a->body < b->body ? -1 : 1;
+    return a->partner < b->partner ? -1 : a->partner > b->partner;
+}
+
+/* the centre of mass over all the contacts' regions together, seen along
+ * the force */
+static int carried(vrWorld *w, const vrCandidate *c, int k, vec3 g, double T)
+{
+    vec3 *pts, com;
+    vrPose p;
+    int i, n = 0, inside;
+    for (i = 0; i < k; i++) n += c[i].npoints;
+    pts = malloc((size_t)n * sizeof *pts);
+    if (!pts) return 0;
+    for (i = 0, n = 0; i < k; i++) {
+        memcpy(pts + n, c[i].point, (size_t)c[i].npoints * sizeof *pts);
+        n += c[i].npoints;
+    }
+    vrBody_Pose(&w->obj[c[0].body]->body, T, &p);
+    com = p.p;
+    inside = vrRegion_Contains(pts, n, vec3_normalize(g), com, CONTAIN_TOL);
+    free(pts);
+    return inside;
+}
+
+/* support begins on every one of the contacts, as for one (SPEC 3.1): the
+ * force's normal components go, and what is left of the normal relative
+ * velocity */
+static int support_all(vrUpdate *up, vrBody *b, double T, const vrCandidate *c, int k)
+{
+    vrBodyState *st = vrUpdate_Body(up, b, T);
+    int i;
+    if (!st) return -1;
+    for (i = 0; i < k && st->nsupport < VR_MAX_SUPPORTS; i++) {
+        st->v = vec3_madd(st->v, -vec3_dot(c[i].n, vec3_sub(st->v, c[i].partner_velocity)), c[i].n);
+        st->support[st->nsupport].partner = c[i].partner;
+        st->support[st->nsupport].n = c[i].n;
+        st->support[st->nsupport].joint = 1;
+        st->nsupport++;
+    }
+    return 0;
+}
+
+/* the joint supports of a body whose contacts no longer carry it end */
+static int drop_joint(vrUpdate *up, vrBody *b, double T)
+{
+    vrBodyState *st = vrUpdate_Body(up, b, T);
+    int i, k = 0;
+    if (!st) return -1;
+    for (i = 0; i < st->nsupport; i++)
+        if (!st->support[i].joint) st->support[k++] = st->support[i];
+    st->nsupport = k;
+    return 0;
+}
+
+/* one body and its candidates: keep, begin or end support by them together */
+static int decide(vrWorld *w, vrUpdate *up, double T, vec3 g, const vrCandidate *c, int k)
+{
+    vrBody *b = &w->obj[c[0].body]->body;
+    int held = joint_supports(b) > 0, carry = k >= 2 && carried(w, c, k, g, T);
+    if (held && !carry) return drop_joint(up, b, T);
+    if (!held && carry) return support_all(up, b, T, c, k);
+    return 0;
+}
+
+int vrRest_SeveralSupports(vrWorld *w, double T, const vrOwnerSet *owners, vrUpdate *up, char *err, size_t n)
+{
+    vrCandidates list = {0, 0, NULL};
+    vec3 g = vrWorld_Flight(w).accel;
+    unsigned char *want;
+    int count, i, j, r = 0;
+    if (vec3_len2(g) == 0) return 0;
+    want = wanted(w, &count);
+    if (!want) return snprintf(err, n, "out of memory"), -1;
+    if (count > 0) r = owners->support_candidates(w, T, want, &list, err, n);
+    free(want);
+    if (r != 0) {
+        vrCandidates_Free(&list);
+        return r;
+    }
+    if (list.n > 1) qsort(list.c, (size_t)list.n, sizeof *list.c, by_body);
+    for (i = 0; i < list.n && r == 0; i = j) {
+        for (j = i; j < list.n && list.c[j].body == list.c[i].body; j++)
+            ;
+        r = decide(w, up, T, g, list.c + i, j - i);
+    }
+    /* jointly carried bodies with no candidate left at all */
+    for (i = 0; i < w->nobj && r == 0; i++) {
+        vrObject *o = w->obj[i];
+        int k;
+        if (!o || !o->live || o->body.resting || joint_supports(&o->body) == 0) continue;
+        for (k = 0; k < list.n && list.c[k].body != i; k++)
+            ;
+        if (k == list.n) r = drop_joint(up, &o->body, T);
+    }
+    vrCandidates_Free(&list);
+    return r == 0 ? 0 : (snprintf(err, n, "out of memory"), -1);
 }

@@ -824,7 +824,15 @@ static int serial_overlapping(vrWorld *w, double tol, int (*out)[2], int max, ch
     return vrOwner_Overlapping(w->owner, w->t, tol, out, max);
 }
 
-static const vrOwnerSet serial_owners = {serial_first_event, serial_respond, serial_end_frame, serial_overlapping};
+static int serial_candidates(vrWorld *w, double T, const unsigned char *want, vrCandidates *out, char *err, size_t n)
+{
+    if (deliver(w) != 0 || vrOwner_SupportCandidates(w->owner, T, want, w->nobj, out) != 0)
+        return fail_msg(err, n, "out of memory");
+    return 0;
+}
+
+static const vrOwnerSet serial_owners = {serial_first_event, serial_respond, serial_end_frame, serial_overlapping,
+                                         serial_candidates};
 
 static const vrOwnerSet *owners(const vrWorld *w) { return w->s.gps > 0 ? &vrSgp_Owners : &serial_owners; }
 
@@ -927,6 +935,10 @@ static int run_frame(vrWorld *w, char *err, size_t n)
         if (r == VR_RESTART_FRAME) goto restart;
         if (r < 0) return -1;
         if (r == 0) {
+            w->update.n = 0;
+            r = vrRest_SeveralSupports(w, T, owners(w), &w->update, err, n);
+            if (r == VR_RESTART_FRAME) goto restart;
+            if (r != 0 || vrWorld_ApplyUpdate(w, &w->update) != 0) return -1;
             owners(w)->end_frame(w, T);
             w->subframes += g.n;
             break;

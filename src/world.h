@@ -68,6 +68,9 @@ typedef struct vrOwnerSet {
     void (*end_frame)(vrWorld *w, double T);
     /* pairs overlapping deeper than tol among those to be evaluated */
     int (*overlapping)(vrWorld *w, double tol, int (*out)[2], int max, char *err, size_t n);
+    /* frame end T: contacts that could carry the bodies with want[id] */
+    int (*support_candidates)(vrWorld *w, double T, const unsigned char *want, vrCandidates *out,
+                              char *err, size_t n);
 } vrOwnerSet;
 
 vrParams vrWorld_Params(const vrWorld *w);
@@ -96,6 +99,9 @@ void vrSgp_Stats(const struct vrSgp *s, vrStats *st);
 int vrRest_WakeDependents(vrWorld *w, vrUpdate *up, double t);
 /* frame end: puts to rest what qualifies; fills up with the new states */
 int vrRest_FrameEnd(vrWorld *w, vrUpdate *up);
+/* frame end T: bodies carried by several contacts together become
+ * supported by all of them; -1 (err) or VR_RESTART_FRAME from the owners */
+int vrRest_SeveralSupports(vrWorld *w, double T, const vrOwnerSet *owners, vrUpdate *up, char *err, size_t n);
 void vrRest_RememberFramePoses(vrWorld *w);
 
 /* random.c */

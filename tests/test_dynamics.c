@@ -423,6 +423,28 @@ static int test_balls_and_box_come_to_rest_without_jitter(void)
     return 0;
 }
 
+/* a plank across two blocks: no single contact carries it, the two together
+ * do (SPEC 3.1's support, for several contacts at once); it rests on them */
+static int test_plank_across_two_blocks_rests_on_both(void)
+{
+    vrWorld *w = new_world(0.05, 0.01, 9.8);
+    vrObjectId plank;
+    vrObjectState s;
+    int f;
+    box(w, "left", vec3_make(0.2, 0.2, 0.5), vec3_make(-0.6, 0, 0.5), -1, 1);
+    box(w, "right", vec3_make(0.2, 0.2, 0.5), vec3_make(0.6, 0, 0.5), -1, 1);
+    plank = box(w, "plank", vec3_make(0.7, 0.1, 0.02), vec3_make(0.02, 0, 1.3), 1, 0.3);
+    for (f = 0; f < 60 && !vrWorld_AllAtRest(w); f++) ENSURE(step(w, 1) == 0);
+    s = state(w, plank);
+    printf("    at rest after %d frames, %lld impulses\n", f, stats(w).collisions);
+    ENSURE(s.state == VR_STATE_REST);
+    ENSURE_MSG(s.position[2] >= 1.02 - 1e-9 && s.position[2] <= 1.03 + 1e-9, "z %g", s.position[2]);
+    ENSURE(fabs(s.position[0] - 0.02) < 1e-3);
+    ENSURE(stats(w).collisions < 200);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
 /* ---- determinism ------------------------------------------------------------------------- */
 
 static void room_scene(vrSettings *s)
@@ -510,6 +532,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_sliding_ball_stays_in_envelope_and_leaves_edge);
     RUN_TEST(test_box_on_edge_tips_over_and_lies_flat);
     RUN_TEST(test_balls_and_box_come_to_rest_without_jitter);
+    RUN_TEST(test_plank_across_two_blocks_rests_on_both);
     RUN_TEST(test_heap_on_off_and_reruns_are_bit_identical);
     RUN_TEST(test_interpenetration_at_start_is_refused);
     return test_summary();

@@ -193,6 +193,50 @@ static int test_foreign_and_malformed_messages_are_ignored(void)
     return 0;
 }
 
+/* planks across pairs of blocks: the frame-end round that finds bodies
+ * carried by several contacts gives the serial answer too */
+static void planks(vrWorld *w)
+{
+    vrSettings s = *vrWorld_Settings(w);
+    int i;
+    s.collision_dist = 0.01;
+    s.time_step = 0.05;
+    s.force_mag = 9.8;
+    vrWorld_SetSettings(w, &s, NULL, 0);
+    for (i = 0; i < 4; i++) {
+        vrObjectId id;
+        vrObjectDef d = vrObjectDef_Default(VR_CUBE);
+        char name[16];
+        d.size[0] = 0.2; d.size[1] = 0.2; d.size[2] = 0.5;
+        d.translate[0] = 3.0 * i - 0.6; d.translate[2] = 0.5;
+        d.mass = -1; d.mass_set = 1;
+        snprintf(name, sizeof name, "l%d", i);
+        vrWorld_CreateObject(w, name, VR_CUBE, &id, NULL, 0);
+        vrWorld_SetObjectDef(w, id, &d, NULL, 0);
+        d.translate[0] = 3.0 * i + 0.6;
+        snprintf(name, sizeof name, "r%d", i);
+        vrWorld_CreateObject(w, name, VR_CUBE, &id, NULL, 0);
+        vrWorld_SetObjectDef(w, id, &d, NULL, 0);
+        d.size[0] = 0.7; d.size[1] = 0.1; d.size[2] = 0.02;
+        d.translate[0] = 3.0 * i + 0.02 * (i + 1); d.translate[2] = 1.3 + 0.1 * i;
+        d.mass = 1; d.elasticity = 0.3;
+        snprintf(name, sizeof name, "p%d", i);
+        vrWorld_CreateObject(w, name, VR_CUBE, &id, NULL, 0);
+        vrWorld_SetObjectDef(w, id, &d, NULL, 0);
+    }
+}
+
+static int test_joint_supports_match_serial(void)
+{
+    vrRun serial = run(planks, 0, "memq://", VR_DIST_ROUND_ROBIN, 40);
+    vrRun two = run(planks, 2, "memq://", VR_DIST_ROUND_ROBIN, 40);
+    vrRun three = run(planks, 3, UDPM, VR_DIST_IMPROVED, 40);
+    ENSURE(!serial.failed && !two.failed && !three.failed);
+    ENSURE(serial.stats.resting == 4);
+    ENSURE(two.hash == serial.hash && three.hash == serial.hash);
+    return 0;
+}
+
 /* ---- distribution and messages ------------------------------------------------------ */
 
 static void six_objects(vrWorld *w)
@@ -306,6 +350,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_silent_worker_in_process_is_replaced);
     RUN_TEST(test_no_worker_left_is_a_clear_error);
     RUN_TEST(test_foreign_and_malformed_messages_are_ignored);
+    RUN_TEST(test_joint_supports_match_serial);
     RUN_TEST(test_improved_distribution_meets_thesis_example);
     RUN_TEST(test_improved_distribution_needs_fewer_copies_on_random_60);
     RUN_TEST(test_messages_do_not_grow_with_objects);

@@ -24,6 +24,8 @@
 #include "wire.h"
 #include "worker.h"
 #include "vroc_advance_t.h"
+#include "vroc_candidates_t.h"
+#include "vroc_contacts_t.h"
 #include "vroc_earliest_t.h"
 #include "vroc_frame_start_t.h"
 #include "vroc_hello_t.h"
@@ -38,7 +40,7 @@
 #define ANNOUNCE_MS 10000.0     /* workers have this long to announce themselves */
 #define MAX_OVERLAPS 64
 
-enum { WAIT_EARLIEST, WAIT_UPDATE };
+enum { WAIT_EARLIEST, WAIT_UPDATE, WAIT_CANDIDATES };
 
 typedef struct vrGpInfo {
     long long nonce;
@@ -66,13 +68,14 @@ struct vrSgp {
     vrBuf req;                  /* the broadcast request awaiting answers */
     const char *req_channel;
     vrUpdate reply;             /* the responder's states */
+    vrCandidates candidates;    /* frame end: what the workers found */
     int overlap[MAX_OVERLAPS][2], noverlap;
     char error[256];
     int frame_open;
     vrUpdate snap, snap_pending;   /* the frame start, to redo the frame */
     long long snap_collisions;
     long long requests, received, foreign, malformed;
-    lcm_subscription_t *subs[3];
+    lcm_subscription_t *subs[4];
 };
 
 /* ---- replies ------------------------------------------------------------------------ */
@@ -153,6 +156,25 @@ static void on_update(const lcm_recv_buf_t *rb, const char *ch, void *user)
         }
     }
     vroc_update_t_decode_cleanup(&m);
+}
+
+static void on_candidates(const lcm_recv_buf_t *rb, const char *ch, void *user)
+{
+    vrSgp *s = user;
+    vroc_candidates_t m;
+    vrGpInfo *g;
+    (void)ch;
+    if (vroc_candidates_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) {
+        s->malformed++;
+        return;
+    }
+    g = sender(s, m.run, m.seq, m.gp, WAIT_CANDIDATES);
+    if (g) {
+        if (vrWire_GetCandidates(&m, s->max_id, &s->candidates) != 0) s->malformed++;
+        else g->replied = 1;
+        if (m.error[0] && !s->error[0]) snprintf(s->error, sizeof s->error, "worker %d: %s", m.gp, m.error);
+    }
+    vroc_candidates_t_decode_cleanup(&m);
 }
 
 /* heartbeats of busy workers; announcements of free ones */
@@ -387,14 +409,14 @@ static int encode_setup(vrWorld *w, vrSgp *s, int g, const int *pi, const int *p
         if (d->gp_of[k] == g) need[pi[k]] = need[pj[k]] = 1, np++;
     m.a = malloc((size_t)(np + 1) * sizeof *m.a);
     m.b = malloc((size_t)(np + 1) * sizeof *m.b);
-    m.flagged = malloc((size_t)(np + 1));
+    m.flagged = malloc((size_t)(np + 1) * sizeof *m.flagged);
     defs = calloc((size_t)w->nobj + 1, sizeof *defs);
     if (need && m.a && m.b && m.flagged && defs) {
         for (k = 0; k < d->npairs; k++)
             if (d->gp_of[k] == g) {
                 m.a[m.npairs] = pi[k];
                 m.b[m.npairs] = pj[k];
-                m.flagged[m.npairs++] = (int8_t)(vrWorld_Pending(w, pi[k]) || vrWorld_Pending(w, pj[k]));
+                m.flagged[m.npairs++] = vrWorld_Pending(w, pi[k]) || vrWorld_Pending(w, pj[k]);
             }
         for (i = 0; i < w->nobj; i++)
             if (need[i]) {
@@ -549,6 +571,7 @@ static vrSgp *open_sgp(const vrWorld *w, char *err, size_t n)
     s->subs[0] = lcm_subscribe(s->link.lcm, VR_CH_EARLIEST, on_earliest, s);
     s->subs[1] = lcm_subscribe(s->link.lcm, VR_CH_UPDATE, on_update, s);
     s->subs[2] = lcm_subscribe(s->link.lcm, VR_CH_HELLO, on_hello, s);
+    s->subs[3] = lcm_subscribe(s->link.lcm, VR_CH_CANDIDATES, on_candidates, s);
     for (i = 0; local_url(s->url) && i < s->n; i++) {
         s->gp[i].nonce = s->run ^ ((long long)(i + 1) << 40);
         s->local[i] = vrWorker_Create(&s->link, s->gp[i].nonce, 0);
@@ -589,11 +612,12 @@ void vrSgp_Free(vrSgp *s)
         }
         vrBuf_Free(&s->gp[i].setup);
     }
-    for (i = 0; i < 3; i++)
+    for (i = 0; i < 4; i++)
         if (s->subs[i]) lcm_unsubscribe(s->link.lcm, s->subs[i]);
     vrLink_Close(&s->link);
     vrBuf_Free(&s->req);
     vrUpdate_Free(&s->reply);
+    vrCandidates_Free(&s->candidates);
     vrUpdate_Free(&s->snap);
     vrUpdate_Free(&s->snap_pending);
     free(s);
@@ -782,7 +806,39 @@ static int sgp_overlapping(vrWorld *w, double tol, int (*out)[2], int max, char 
     return s->noverlap;
 }
 
-const vrOwnerSet vrSgp_Owners = {sgp_first_event, sgp_respond, sgp_end_frame, sgp_overlapping};
+/* frame end: ask every worker for the contacts that could carry the
+ * wanted bodies (an extra round, only in frames that have such bodies) */
+static int sgp_candidates(vrWorld *w, double T, const unsigned char *want, vrCandidates *out, char *err, size_t n)
+{
+    vrSgp *s = w->sgp;
+    vroc_contacts_t m;
+    int i, k = 0, r;
+    memset(&m, 0, sizeof m);
+    m.want = malloc((size_t)w->nobj * sizeof *m.want + 1);
+    if (!m.want) return snprintf(err, n, "out of memory"), -1;
+    for (i = 0; i < w->nobj; i++)
+        if (want[i]) m.want[k++] = i;
+    m.nwant = k;
+    m.run = s->run;
+    m.seq = ++s->seq;
+    m.t = T;
+    s->error[0] = 0;
+    s->candidates.n = 0;
+    r = VR_ENCODE(&s->req, vroc_contacts_t, &m);
+    free(m.want);
+    if (r != 0) return snprintf(err, n, "out of memory"), -1;
+    s->req_channel = VR_CH_CONTACTS;
+    if (exchange(s, WAIT_CANDIDATES, -1)) return recover(w, err, n);
+    if (s->error[0]) return snprintf(err, n, "%s", s->error), -1;
+    for (i = 0; i < s->candidates.n; i++) {
+        vrCandidate *c = vrCandidates_Add(out);
+        if (!c) return snprintf(err, n, "out of memory"), -1;
+        *c = s->candidates.c[i];
+    }
+    return 0;
+}
+
+const vrOwnerSet vrSgp_Owners = {sgp_first_event, sgp_respond, sgp_end_frame, sgp_overlapping, sgp_candidates};
 
 void vrSgp_Stats(const vrSgp *s, vrStats *st)
 {

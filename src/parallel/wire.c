@@ -20,8 +20,9 @@ int vrWire_PutStates(vrWireStates *w, const vrUpdate *up)
     w->n = up->n;
     w->m = calloc((size_t)(up->n ? up->n : 1), sizeof *w->m);
     w->partner = calloc((size_t)(up->n ? up->n : 1), sizeof *w->partner);
+    w->joint = calloc((size_t)(up->n ? up->n : 1), sizeof *w->joint);
     w->normal = calloc((size_t)(up->n ? up->n : 1), sizeof *w->normal);
-    if (!w->m || !w->partner || !w->normal) return -1;
+    if (!w->m || !w->partner || !w->joint || !w->normal) return -1;
     for (i = 0; i < up->n; i++) {
         const vrBodyState *st = &up->body[i];
         vroc_body_state_t *m = &w->m[i];
@@ -37,9 +38,11 @@ int vrWire_PutStates(vrWireStates *w, const vrUpdate *up)
         m->nsupport = st->nsupport;
         m->nnormal = 3 * st->nsupport;
         m->partner = w->partner[i];
+        m->joint = w->joint[i];
         m->normal = w->normal[i];
         for (k = 0; k < st->nsupport; k++) {
             w->partner[i][k] = st->support[k].partner;
+            w->joint[i][k] = st->support[k].joint;
             put3(&w->normal[i][3 * k], st->support[k].n);
         }
     }
@@ -50,6 +53,7 @@ void vrWire_FreeStates(vrWireStates *w)
 {
     free(w->m);
     free(w->partner);
+    free(w->joint);
     free(w->normal);
     memset(w, 0, sizeof *w);
 }
@@ -74,6 +78,7 @@ static int get_state(const vroc_body_state_t *m, int max_id, vrBodyState *st)
     for (k = 0; k < m->nsupport; k++) {
         if (m->partner[k] < 0 || m->partner[k] >= max_id) return -1;
         st->support[k].partner = m->partner[k];
+        st->support[k].joint = m->joint[k] != 0;
         st->support[k].n = get3(&m->normal[3 * k]);
     }
     return 0;
@@ -99,6 +104,70 @@ int vrWire_GetStates(const vroc_body_state_t *m, int n, int max_id, vrUpdate *up
             up->cap = cap;
         }
         up->body[up->n++] = st;
+    }
+    return 0;
+}
+
+int vrWire_PutCandidates(vroc_candidates_t *m, const vrCandidates *c)
+{
+    int i, k, npt = 0;
+    for (i = 0; i < c->n; i++) npt += c->c[i].npoints;
+    m->n = c->n;
+    m->n3 = 3 * c->n;
+    m->npt3 = 3 * npt;
+    m->body = malloc((size_t)(c->n + 1) * sizeof *m->body);
+    m->partner = malloc((size_t)(c->n + 1) * sizeof *m->partner);
+    m->npoints = malloc((size_t)(c->n + 1) * sizeof *m->npoints);
+    m->normal = malloc((size_t)(m->n3 + 1) * sizeof *m->normal);
+    m->velocity = malloc((size_t)(m->n3 + 1) * sizeof *m->velocity);
+    m->points = malloc((size_t)(m->npt3 + 1) * sizeof *m->points);
+    if (!m->body || !m->partner || !m->npoints || !m->normal || !m->velocity || !m->points) return -1;
+    for (i = 0, npt = 0; i < c->n; i++) {
+        const vrCandidate *k0 = &c->c[i];
+        m->body[i] = k0->body;
+        m->partner[i] = k0->partner;
+        m->npoints[i] = k0->npoints;
+        put3(&m->normal[3 * i], k0->n);
+        put3(&m->velocity[3 * i], k0->partner_velocity);
+        for (k = 0; k < k0->npoints; k++, npt++) put3(&m->points[3 * npt], k0->point[k]);
+    }
+    return 0;
+}
+
+void vrWire_FreeCandidates(vroc_candidates_t *m)
+{
+    free(m->body);
+    free(m->partner);
+    free(m->npoints);
+    free(m->normal);
+    free(m->velocity);
+    free(m->points);
+}
+
+int vrWire_GetCandidates(const vroc_candidates_t *m, int max_id, vrCandidates *out)
+{
+    int i, k, npt = 0, old = out->n;
+    if (m->n < 0 || m->n3 != 3 * m->n || !finite_all(m->normal, m->n3) || !finite_all(m->velocity, m->n3)
+        || !finite_all(m->points, m->npt3))
+        return -1;
+    for (i = 0; i < m->n; i++) {
+        vrCandidate *c;
+        if (m->body[i] < 0 || m->body[i] >= max_id || m->partner[i] < 0 || m->partner[i] >= max_id
+            || m->npoints[i] < 1 || m->npoints[i] > VR_REGION_MAX || 3 * (npt + m->npoints[i]) > m->npt3
+            || !(c = vrCandidates_Add(out))) {
+            out->n = old;
+            return -1;
+        }
+        c->body = m->body[i];
+        c->partner = m->partner[i];
+        c->n = get3(&m->normal[3 * i]);
+        c->partner_velocity = get3(&m->velocity[3 * i]);
+        c->npoints = m->npoints[i];
+        for (k = 0; k < c->npoints; k++, npt++) c->point[k] = get3(&m->points[3 * npt]);
+    }
+    if (3 * npt != m->npt3) {
+        out->n = old;
+        return -1;
     }
     return 0;
 }

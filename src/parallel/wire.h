@@ -10,12 +10,14 @@
 #include "vroc_body_state_t.h"
 #include "vroc_grid_t.h"
 #include "vroc_params_t.h"
+#include "vroc_candidates_t.h"
 
 /* an array of states ready to encode (the messages point into it) */
 typedef struct vrWireStates {
     int n;
     vroc_body_state_t *m;
     int32_t (*partner)[VR_MAX_SUPPORTS];
+    int32_t (*joint)[VR_MAX_SUPPORTS];
     double (*normal)[3 * VR_MAX_SUPPORTS];
 } vrWireStates;
 
@@ -24,6 +26,12 @@ void vrWire_FreeStates(vrWireStates *w);
 /* appends the received states to up; -1 (up unchanged past its old end) if
  * any is malformed or names an id outside [0, max_id) */
 int vrWire_GetStates(const vroc_body_state_t *m, int n, int max_id, vrUpdate *up);
+
+/* support candidates (frame end): the message's arrays are allocated here */
+int vrWire_PutCandidates(vroc_candidates_t *m, const vrCandidates *c);
+void vrWire_FreeCandidates(vroc_candidates_t *m);
+/* appends; -1 when malformed (nothing appended) */
+int vrWire_GetCandidates(const vroc_candidates_t *m, int max_id, vrCandidates *out);
 
 void vrWire_PutDef(vroc_body_def_t *m, int id, const vrObjectDef *d, char *off_text);
 int vrWire_GetDef(const vroc_body_def_t *m, vrObjectDef *d);

@@ -9,6 +9,8 @@
 #include "worker.h"
 #include "wire.h"
 #include "vroc_advance_t.h"
+#include "vroc_candidates_t.h"
+#include "vroc_contacts_t.h"
 #include "vroc_earliest_t.h"
 #include "vroc_frame_start_t.h"
 #include "vroc_hello_t.h"
@@ -39,7 +41,7 @@ struct vrWorker {
     int kill_gp, kill_frame;      /* VROC_FAULT_KILL=gp:frame */
     int silent, done;
     double last_hello;
-    lcm_subscription_t *subs[5];
+    lcm_subscription_t *subs[6];
 };
 
 /* ---- answering ------------------------------------------------------------------ */
@@ -304,6 +306,50 @@ static void on_forward(const lcm_recv_buf_t *rb, const char *ch, void *user)
     vroc_update_t_decode_cleanup(&m);
 }
 
+/* frame end: the contacts that could carry the wanted bodies */
+static void report_candidates(vrWorker *k, const vroc_contacts_t *m)
+{
+    vrCandidates list = {0, 0, NULL};
+    vroc_candidates_t r;
+    int maxid = 0, i;
+    unsigned char *want;
+    for (i = 0; i < m->nwant; i++)
+        if (m->want[i] >= maxid) maxid = m->want[i] + 1;
+    want = calloc((size_t)maxid + 1, 1);
+    memset(&r, 0, sizeof r);
+    for (i = 0; want && i < m->nwant; i++)
+        if (m->want[i] >= 0) want[m->want[i]] = 1;
+    r.run = k->run;
+    r.seq = m->seq;
+    r.gp = k->gp;
+    r.error = "";
+    if (!want || vrOwner_SupportCandidates(k->owner, m->t, want, maxid, &list) != 0 || vrWire_PutCandidates(&r, &list) != 0) {
+        vrWire_FreeCandidates(&r);
+        memset(&r, 0, sizeof r);
+        r.run = k->run;
+        r.seq = m->seq;
+        r.gp = k->gp;
+        r.error = "out of memory";
+    }
+    if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) answer(k, VR_CH_CANDIDATES, m->seq);
+    vrWire_FreeCandidates(&r);
+    vrCandidates_Free(&list);
+    free(want);
+}
+
+static void on_contacts(const lcm_recv_buf_t *rb, const char *ch, void *user)
+{
+    vrWorker *k = user;
+    vroc_contacts_t m;
+    (void)ch;
+    if (vroc_contacts_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
+    if (k->owner && fresh(k, m.run, m.seq) && isfinite(m.t)) {
+        vrOwner_Advance(k->owner, m.t);
+        report_candidates(k, &m);
+    }
+    vroc_contacts_t_decode_cleanup(&m);
+}
+
 static void on_shutdown(const lcm_recv_buf_t *rb, const char *ch, void *user)
 {
     vrWorker *k = user;
@@ -340,7 +386,8 @@ vrWorker *vrWorker_Create(vrLink *link, long long nonce, int forked)
     k->subs[2] = lcm_subscribe(link->lcm, VR_CH_ADVANCE, on_advance, k);
     k->subs[3] = lcm_subscribe(link->lcm, VR_CH_FORWARD, on_forward, k);
     k->subs[4] = lcm_subscribe(link->lcm, VR_CH_SHUTDOWN, on_shutdown, k);
-    if (!k->world || !k->subs[0] || !k->subs[1] || !k->subs[2] || !k->subs[3] || !k->subs[4]) {
+    k->subs[5] = lcm_subscribe(link->lcm, VR_CH_CONTACTS, on_contacts, k);
+    if (!k->world || !k->subs[0] || !k->subs[1] || !k->subs[2] || !k->subs[3] || !k->subs[4] || !k->subs[5]) {
         vrWorker_Free(k);
         return NULL;
     }
@@ -351,7 +398,7 @@ void vrWorker_Free(vrWorker *k)
 {
     int i;
     if (!k) return;
-    for (i = 0; i < 5; i++)
+    for (i = 0; i < 6; i++)
         if (k->subs[i]) lcm_unsubscribe(k->link->lcm, k->subs[i]);
     vrOwner_Free(k->owner);
     vrWorld_Destroy(k->world);
