@@ -17,6 +17,7 @@
 #include <lcm/lcm.h>
 #include <time.h>
 #include "vroc.h"
+#include "netns.h"
 
 #define UDPM "udpm://239.255.76.67:7667?ttl=0"
 
@@ -313,28 +314,6 @@ static int test_messages_do_not_grow_with_objects(void)
     ENSURE(small.stats.collisions == 0 && big.stats.collisions == 0);
     ENSURE(small.stats.messages == big.stats.messages);
     return 0;
-}
-
-/* ---- the namespace ------------------------------------------------------------------------- */
-
-static void enter_namespace(int argc, char **argv)
-{
-    char *args[16];
-    int i, k = 0;
-    if (getenv("VROC_NETNS")) return;
-    args[k++] = "unshare";
-    args[k++] = "-n";
-    args[k++] = "sh";
-    args[k++] = "-c";
-    args[k++] = "ip link set lo up && ip link set lo multicast on && ip route add 224.0.0.0/4 dev lo "
-                "&& VROC_NETNS=1 exec \"$0\" \"$@\" "
-                "|| { echo 'FAIL cannot make a private network namespace (unshare -n needs root)'; "
-                "echo '0 passed, 1 failed'; exit 1; }";
-    for (i = 0; i < argc && k < 15; i++) args[k++] = argv[i];
-    args[k] = NULL;
-    execvp("unshare", args);
-    printf("FAIL cannot run unshare: UDP multicast tests need a private network namespace\n0 passed, 1 failed\n");
-    exit(1);
 }
 
 int main(int argc, char **argv)
