@@ -211,8 +211,9 @@ const char *vrDisplay_RendererName(const vrDisplay *d);
 
 /* ---- workers (SPEC 5) ---------------------------------------------------- */
 /* The loop of a worker process (`vroc-gp URL`): announces itself on the LCM
- * URL, serves one SGP run after another, returns when told to shut down.
- * -1 with a message when the URL cannot be opened. */
+ * URL until a shell claims it, serves that shell's run, and returns when the
+ * shell shuts the run down.  -1 with a message when the URL cannot be
+ * opened. */
 int vrWorker_Run(const char *url, char *err, size_t errlen);
 
 #ifdef __cplusplus

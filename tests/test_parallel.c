@@ -238,6 +238,47 @@ static int test_joint_supports_match_serial(void)
     return 0;
 }
 
+/* workers on "other hosts" (ttl=1): started by hand as `vroc-gp URL`; the
+ * shell claims them instead of forking its own */
+static const char *build_dir = "build/rel";
+
+static pid_t start_vroc_gp(const char *url)
+{
+    char path[600];
+    pid_t pid;
+    snprintf(path, sizeof path, "%s/vroc-gp", build_dir);
+    pid = fork();
+    if (pid == 0) {
+        execl(path, "vroc-gp", url, (char *)NULL);
+        _exit(127);
+    }
+    return pid;
+}
+
+static int stopped_within(pid_t pid, double seconds)
+{
+    int status, i;
+    for (i = 0; i < (int)(seconds * 100); i++) {
+        struct timespec pause = {0, 10000000};
+        if (waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+        nanosleep(&pause, NULL);
+    }
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+    return 0;
+}
+
+static int test_hand_started_workers_serve_a_ttl1_url(void)
+{
+    const char *url = "udpm://239.255.76.67:7667?ttl=1";
+    pid_t a = start_vroc_gp(url), b = start_vroc_gp(url);
+    vrRun r = run(random_60, 2, url, VR_DIST_IMPROVED, 200);
+    int a_ok = stopped_within(a, 5), b_ok = stopped_within(b, 5);
+    if (same_as_serial(r, "two hand-started vroc-gp")) return 1;
+    ENSURE(a_ok && b_ok);                 /* the shutdown reached them */
+    return 0;
+}
+
 /* ---- distribution and messages ------------------------------------------------------ */
 
 static void six_objects(vrWorld *w)
@@ -320,6 +361,7 @@ int main(int argc, char **argv)
 {
     enter_namespace(argc, argv);
     test_init(argc, argv);
+    if (getenv("VROC_BUILD")) build_dir = getenv("VROC_BUILD");
     serial_60 = run(random_60, 0, UDPM, VR_DIST_ROUND_ROBIN, 200);
     printf("    serial: %lld collisions, hash %016llx\n", serial_60.stats.collisions, serial_60.hash);
     RUN_TEST(test_in_process_workers_match_serial_bit_for_bit);
@@ -330,6 +372,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_no_worker_left_is_a_clear_error);
     RUN_TEST(test_foreign_and_malformed_messages_are_ignored);
     RUN_TEST(test_joint_supports_match_serial);
+    RUN_TEST(test_hand_started_workers_serve_a_ttl1_url);
     RUN_TEST(test_improved_distribution_meets_thesis_example);
     RUN_TEST(test_improved_distribution_needs_fewer_copies_on_random_60);
     RUN_TEST(test_messages_do_not_grow_with_objects);
