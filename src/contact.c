@@ -873,6 +873,17 @@ static double seg_dist(vrP2 a, vrP2 b)
 }
 
 /* Andrew's monotone chain, then edge tests */
+double vrShape_Extent(const vrShape *s, const vrPose *p, vec3 u)
+{
+    vec3 ub;
+    double best = -INFINITY;
+    int i;
+    if (s->kind == VR_SHAPE_SPHERE) return vec3_dot(u, p->p) + s->radius;
+    ub = mat33_tmulv(&p->R, u);     /* u in the body frame: one rotation, not one per vertex */
+    for (i = 0; i < s->poly->nv; i++) best = fmax(best, vec3_dot(ub, s->poly->vert[i]));
+    return best + vec3_dot(u, p->p);
+}
+
 int vrRegion_Contains(const vec3 *pts, int n, vec3 nrm, vec3 q, double tol)
 {
     vec3 t1 = vec3_orthogonal(nrm), t2 = vec3_cross(nrm, t1);

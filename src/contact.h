@@ -93,6 +93,11 @@ int vrContact_Region(const vrShape *a, const vrPose *pa, const vrShape *b, const
 int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
                     vrWalkCache *cache, double *dist, vec3 *n);
 
+/* How far the posed shape reaches along the unit direction u: the largest
+ * u.x over its points (a sphere: u.centre + radius; a polyhedron: over its
+ * vertices, so O(vertices)). */
+double vrShape_Extent(const vrShape *s, const vrPose *p, vec3 u);
+
 /* Is q inside the convex hull of pts (n of them) seen along nrm, within tol?  (SPEC 3.1: a support's centre of mass over
  * its contact region.) */
 int vrRegion_Contains(const vec3 *pts, int n, vec3 nrm, vec3 q, double tol);

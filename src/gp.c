@@ -360,6 +360,34 @@ static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPos
     else vrContact_Distance(&A->shape, pa, &B->shape, pb, &p->cache, c);
 }
 
+/* Flush surfaces (a table top made of two boxes side by side): a body
+ * sliding on one meets the next one's edge at a slant inside the envelope,
+ * and the slanted normal would kick it back (Box2D's ghost collisions,
+ * Bullet's internal edges).  When x is supported by another body with
+ * normal m and frozen y reaches no higher along m than x's lowest point,
+ * y cannot stop x sliding along its support: the pair's normal for events
+ * and responses is m, as if y were part of the support.  Distances, and so
+ * the schedule, are untouched.  A step up higher than x's gap over its
+ * support is a real obstacle and keeps its normal. */
+static void flush_normal(const vrOwner *o, const vrPair *p, const vrPose *pa, const vrPose *pb, vrContact *c)
+{
+    int side, i;
+    if (c->dist <= 0) return;
+    for (side = 0; side < 2; side++) {
+        const vrBody *x = o->body[side ? p->b : p->a], *y = o->body[side ? p->a : p->b];
+        const vrPose *px = side ? pb : pa, *py = side ? pa : pb;
+        vec3 n_yx = side ? c->n : vec3_neg(c->n);
+        if (frozen(x) || !frozen(y)) continue;
+        for (i = 0; i < x->nsupport; i++) {
+            vec3 m = x->support[i].n;
+            if (x->support[i].partner == (side ? p->a : p->b) || vec3_dot(n_yx, m) >= 1 - 1e-12) continue;
+            if (vrShape_Extent(&y->shape, py, m) > -vrShape_Extent(&x->shape, px, vec3_neg(m)) + CONTAIN_TOL) continue;
+            c->n = side ? m : vec3_neg(m);
+            return;
+        }
+    }
+}
+
 /* the first time in (lo, hi] with distance <= d: exactly BISECTIONS halvings,
  * the event at the upper end of the final bracket (SPEC 3.2) */
 static int within_d(vrOwner *o, vrPair *p, double t)
@@ -544,6 +572,7 @@ static int impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
     vrApproach ap;
     query(o, p, tau, 1, &pa, &pb, &c);
     if (c.npoints == 0) return 0;
+    flush_normal(o, p, &pa, &pb, &c);
     approach(o, p, tau, &pa, &pb, &c, &ap);
     if (ap.umin >= 0) return 0;
     impulse_event(o, ev, VR_EV_IMPACT, tau, p, &c, &ap);
@@ -628,6 +657,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     settle(o, pi, 1, t);
     query(o, p, t, 1, &pa, &pb, &c);
     o->checks--;                         /* the same query again, with the region */
+    flush_normal(o, p, &pa, &pb, &c);
     return inside_events(o, ev, t, p, &pa, &pb, &c);
 }
 
@@ -750,6 +780,7 @@ static int candidate(vrOwner *o, const vrPair *p, int side, double t, vrCandidat
     vrCandidate *k;
     if (!(frozen(Y) || Y->nsupport > 0) || vec3_len2(g) == 0) return 0;
     query(o, (vrPair *)p, t, 1, &pa, &pb, &c);
+    flush_normal(o, p, &pa, &pb, &c);
     n_yx = side ? c.n : vec3_neg(c.n);
     if (c.npoints == 0 || vec3_dot(g, n_yx) > -1e-6 * vec3_len(g)) return 0;
     approach(o, p, t, &pa, &pb, &c, &ap);
