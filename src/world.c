@@ -237,6 +237,20 @@ vrObjectId vrWorld_FindObject(const vrWorld *w, const char *name)
     return VR_NO_OBJECT;
 }
 
+/* the object table has a free slot at w->nobj */
+static int room_for_one_more(vrWorld *w, char *err, size_t n)
+{
+    int cap;
+    vrObject **no;
+    if (w->nobj < w->objcap) return 0;
+    cap = w->objcap ? 2 * w->objcap : 64;
+    no = realloc(w->obj, (size_t)cap * sizeof *no);
+    if (!no) return fail_msg(err, n, "out of memory");
+    w->obj = no;
+    w->objcap = cap;
+    return 0;
+}
+
 int vrWorld_CreateObject(vrWorld *w, const char *name, vrObjectType type, vrObjectId *id, char *err, size_t n)
 {
     vrObject *o;
@@ -248,13 +262,7 @@ int vrWorld_CreateObject(vrWorld *w, const char *name, vrObjectType type, vrObje
         if (err && n) snprintf(err, n, "object '%s' exists", name);
         return -1;
     }
-    if (w->nobj == w->objcap) {
-        int cap = w->objcap ? 2 * w->objcap : 64;
-        vrObject **no = realloc(w->obj, (size_t)cap * sizeof *no);
-        if (!no) return fail_msg(err, n, "out of memory");
-        w->obj = no;
-        w->objcap = cap;
-    }
+    if (room_for_one_more(w, err, n) != 0) return -1;
     o = calloc(1, sizeof *o);
     if (!o) return fail_msg(err, n, "out of memory");
     strcpy(o->name, name);
@@ -427,13 +435,7 @@ int vrWorld_PutObject(vrWorld *w, int id, const vrObjectDef *def, const char *of
     vrObject *o;
     if (id < 0 || check_def(def, err, n) != 0) return -1;
     while (w->nobj <= id) {
-        if (w->nobj == w->objcap) {
-            int cap = w->objcap ? 2 * w->objcap : 64;
-            vrObject **no = realloc(w->obj, (size_t)cap * sizeof *no);
-            if (!no) return fail_msg(err, n, "out of memory");
-            w->obj = no;
-            w->objcap = cap;
-        }
+        if (room_for_one_more(w, err, n) != 0) return -1;
         w->obj[w->nobj++] = NULL;
     }
     free_object(w->obj[id]);
