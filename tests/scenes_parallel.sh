@@ -1,6 +1,7 @@
 #!/bin/sh
-# The thesis scenes give the same dump serially and with 2 and 3 worker
-# processes over UDP multicast, both distributions (SPEC 5: trajectories
+# The thesis scenes give the same dump after 200 frames serially and with
+# 1, 2, 3 and 8 workers, both distributions, in process (memq://), and with
+# 2 and 3 forked worker processes over UDP multicast (SPEC 5: trajectories
 # equal the serial run's, bit for bit).  Runs itself in a private network
 # namespace; fails (never skips) when it cannot make one.
 # Run by tests/run.sh from the repo root with VROC_BUILD set.
@@ -11,14 +12,15 @@ if [ -z "${VROC_NETNS:-}" ]; then
         { echo "FAIL cannot make a private network namespace (unshare -n needs root)"; echo "0 passed, 1 failed"; exit 1; }
 fi
 vroc=${VROC_BUILD:-build/rel}/vroc
-frames=150
+frames=200
 passed=0 failed=0
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 # the scene without its `start`, then a fixed number of frames and a dump
-run() { # run SCENE GPS DISTRIBUTION OUT
+run() { # run SCENE GPS DISTRIBUTION OUT [URL]
     { printf 'gps = %s\ndistribution = %s\n' "$2" "$3"
+      [ -z "${5:-}" ] || printf 'lcm_url = %s\n' "$5"
       sed '/^[[:space:]]*start[[:space:]]*\(#.*\)\{0,1\}$/d' "scenes/$1.cmd"
       printf 'step %s\ndump\n' "$frames"; } | "$vroc" -q >"$4" 2>"$4.err"
 }
@@ -28,13 +30,15 @@ for scene in simple desks basketball office bounce; do
         echo "FAIL scenes/$scene.cmd is missing"; failed=$((failed + 1)); continue
     fi
     run "$scene" 0 round_robin "$tmp/serial"
-    for cfg in "2 round_robin" "3 improved"; do
+    for cfg in "1 round_robin memq://" "2 round_robin memq://" "3 round_robin memq://" "8 round_robin memq://" \
+        "1 improved memq://" "2 improved memq://" "3 improved memq://" "8 improved memq://" \
+        "2 round_robin" "3 improved"; do
         set -- $cfg
-        run "$scene" "$1" "$2" "$tmp/par"
+        run "$scene" "$1" "$2" "$tmp/par" "${3:-}"
         if [ -s "$tmp/serial" ] && cmp -s "$tmp/serial" "$tmp/par" && [ ! -s "$tmp/par.err" ]; then
             passed=$((passed + 1))
         else
-            echo "FAIL $scene: $1 workers ($2) differ from the serial run"
+            echo "FAIL $scene: $1 workers ($2${3:+, $3}) differ from the serial run"
             diff "$tmp/serial" "$tmp/par" | head -5; head -3 "$tmp/par.err"
             failed=$((failed + 1))
         fi
