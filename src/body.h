@@ -105,6 +105,9 @@ vec3 vrBody_PointVelocity(const vrBody *b, double t, const vrPose *pose, vec3 p)
 /* world inverse inertia at the pose */
 mat33 vrBody_InvInertiaWorld(const vrBody *b, const vrPose *pose);
 mat33 vrBody_InertiaWorld(const vrBody *b, const vrPose *pose);
+/* the box the centre of mass sweeps over [t1, t2] (t1 <= t2): exact
+ * extremes of the parabola and of the line after the speed cap */
+void vrBody_PathBox(const vrBody *b, double t1, double t2, vec3 *lo, vec3 *hi);
 /* speed bound over [t, t + span] for the internal-step grid (SPEC 3.2) */
 double vrBody_SpeedBound(const vrBody *b, double t, double span, double accel, double max_linear);
 /* |L| / I_min: a bound on |omega| in free flight */

@@ -31,6 +31,18 @@ typedef struct vrPair {
     vrWalkCache cache;
 } vrPair;
 
+/* The box a moving body's surface can reach in the rest of the frame (its
+ * centre's path, padded by r_out and half the envelope).  Two moving bodies
+ * whose boxes are apart cannot come within d before the frame ends: their
+ * pair is dormant, so an event re-keys only the pairs of its bodies that
+ * could meet (a broadphase, with heap = 1).  Static bodies have no box:
+ * their pairs are always scheduled. */
+typedef struct vrBox { vec3 lo, hi; int valid; } vrBox;
+
+/* per pair, in a byte array an event can sweep without touching the pairs
+ * themselves (a thousand bodies make half a million pairs) */
+enum { HOT_DORMANT = 1, HOT_INSIDE = 2 };
+
 /* what an evaluation changed, so Advance can take it back */
 typedef struct vrUndo {
     int pair;
@@ -47,6 +59,11 @@ struct vrOwner {
     double v_rest;            /* sqrt(2 |a| d), SPEC 3.1 */
     vrBody **body;            /* by id, NULL when not held */
     vrIntList *body_pairs;    /* by id: indices of its pairs */
+    vrIntList *body_partners; /* by id: the other body of each of those pairs */
+    vrBox *box;               /* by id */
+    unsigned char *was_frozen; /* by id: frozen when its pairs were last scheduled (2: not yet) */
+    unsigned char *hot;       /* by pair: HOT_* */
+    int hotcap;
     int bodycap, nheld;
     vrPair *pair;
     int npair, paircap;
@@ -64,7 +81,8 @@ struct vrOwner {
     long long checks, heap_pops;
     void (*progress)(void *ctx);
     void *progress_ctx;
-    double span_end;          /* T of the span being looked through */
+    double span_start;        /* t0 of the span being looked through */
+    double span_end;          /* T of the span being looked through (the frame's end) */
 };
 
 /* ---- small containers ------------------------------------------------------ */
@@ -105,6 +123,7 @@ vrOwner *vrOwner_Create(void)
     vrHeap_Init(&o->heap);
     o->responder = vrResponder_Create();
     o->pending_t = -INFINITY;
+    o->span_start = o->span_end = NAN;   /* no frame yet: no boxes */
     o->p.use_heap = 1;
     if (!o->responder) {
         vrOwner_Free(o);
@@ -117,8 +136,15 @@ void vrOwner_Free(vrOwner *o)
 {
     int i;
     if (!o) return;
-    for (i = 0; i < o->bodycap; i++) free(o->body_pairs[i].v);
+    for (i = 0; i < o->bodycap; i++) {
+        free(o->body_pairs[i].v);
+        free(o->body_partners[i].v);
+    }
     free(o->body_pairs);
+    free(o->body_partners);
+    free(o->box);
+    free(o->was_frozen);
+    free(o->hot);
     free(o->body);
     free(o->pair);
     vrHeap_Free(&o->heap);
@@ -185,6 +211,7 @@ void vrOwner_SetParams(vrOwner *o, const vrParams *p)
     int i;
     o->p = *p;
     o->v_rest = sqrt(2.0 * vec3_len(p->flight.accel) * p->d);
+    o->span_end = NAN;                    /* the boxes are padded by d: made anew */
     for (i = 0; i < o->npair; i++) {
         place(o, i);
         flag(o, i);
@@ -198,10 +225,20 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
         if (grow((void **)&o->body, &cap, id + 1, sizeof *o->body) != 0) return -1;
         cap = old;
         if (grow((void **)&o->body_pairs, &cap, id + 1, sizeof *o->body_pairs) != 0) return -1;
+        cap = old;
+        if (grow((void **)&o->body_partners, &cap, id + 1, sizeof *o->body_partners) != 0) return -1;
+        cap = old;
+        if (grow((void **)&o->box, &cap, id + 1, sizeof *o->box) != 0) return -1;
+        cap = old;
+        if (grow((void **)&o->was_frozen, &cap, id + 1, sizeof *o->was_frozen) != 0) return -1;
         for (i = old; i < cap; i++) {
+            o->box[i].valid = 0;
+            o->was_frozen[i] = 2;
             o->body[i] = NULL;
             o->body_pairs[i].n = o->body_pairs[i].cap = 0;
             o->body_pairs[i].v = NULL;
+            o->body_partners[i].n = o->body_partners[i].cap = 0;
+            o->body_partners[i].v = NULL;
         }
         o->bodycap = cap;
     }
@@ -231,7 +268,10 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
     p->t_check = -INFINITY;
     p->key = -INFINITY;
     p->active = -1;
-    if (list_push(&o->body_pairs[a], o->npair) != 0 || list_push(&o->body_pairs[b], o->npair) != 0) return -1;
+    if (grow((void **)&o->hot, &o->hotcap, o->npair + 1, sizeof *o->hot) != 0) return -1;
+    o->hot[o->npair] = 0;
+    if (list_push(&o->body_pairs[a], o->npair) != 0 || list_push(&o->body_pairs[b], o->npair) != 0
+        || list_push(&o->body_partners[a], b) != 0 || list_push(&o->body_partners[b], a) != 0) return -1;
     o->npair++;
     update_schedule(o, o->npair - 1);
     if (flagged) {
@@ -260,11 +300,14 @@ static void reindex(vrOwner *o)
     vrHeap_Init(&o->heap);
     o->active.n = 0;
     o->flagged.n = 0;
-    for (i = 0; i < o->bodycap; i++) o->body_pairs[i].n = 0;
+    for (i = 0; i < o->bodycap; i++) o->body_pairs[i].n = o->body_partners[i].n = 0;
     for (i = 0; i < o->npair; i++) {
         vrPair *p = &o->pair[i];
         list_push(&o->body_pairs[p->a], i);
         list_push(&o->body_pairs[p->b], i);
+        list_push(&o->body_partners[p->a], p->b);
+        list_push(&o->body_partners[p->b], p->a);
+        o->hot[i] = p->inside ? HOT_INSIDE : 0;
         p->flagged = 0;
         p->active = -1;
         flag(o, i);
@@ -295,16 +338,78 @@ static int event_involves(const vrEvent *ev, const int *ids, int n)
     return 0;
 }
 
+/* the box of body id over [its anchor or the span start, the frame's end] */
+static void update_box(vrOwner *o, int id)
+{
+    vrBody *b = o->body[id];
+    vrBox *x = &o->box[id];
+    double t1, size, pad;
+    x->valid = 0;
+    if (!b || b->is_static || !(o->span_start <= o->span_end)) return;
+    t1 = fmax(b->m.t0, o->span_start);
+    if (!(t1 <= o->span_end)) return;
+    vrBody_PathBox(b, t1, o->span_end, &x->lo, &x->hi);
+    size = fmax(fmax(fmax(fabs(x->lo.x), fabs(x->lo.y)), fmax(fabs(x->lo.z), fabs(x->hi.x))), fmax(fabs(x->hi.y), fabs(x->hi.z)));
+    pad = b->r_out + 0.5 * o->p.d + 1e-9 + 1e-12 * size;   /* far above the rounding of a position */
+    x->lo = vec3_sub(x->lo, vec3_make(pad, pad, pad));
+    x->hi = vec3_add(x->hi, vec3_make(pad, pad, pad));
+    x->valid = 1;
+}
+
+static int has_support(const vrBody *x, int partner);
+
+/* pair pi of bodies x and y cannot come within d before the frame ends */
+static int apart(const vrOwner *o, int pi, int x, int y)
+{
+    const vrBox *a = &o->box[x], *b = &o->box[y];
+    if (!o->p.use_heap || (o->hot[pi] & HOT_INSIDE) || !a->valid || !b->valid) return 0;
+    if (!(a->hi.x < b->lo.x || b->hi.x < a->lo.x || a->hi.y < b->lo.y || b->hi.y < a->lo.y
+          || a->hi.z < b->lo.z || b->hi.z < a->lo.z)) return 0;
+    return !has_support(o->body[x], y) && !has_support(o->body[y], x);
+}
+
+static int pair_apart(const vrOwner *o, int pi) { return apart(o, pi, o->pair[pi].a, o->pair[pi].b); }
+
+/* A new frame: every moving body's box, and dormant pairs that could meet
+ * in it are evaluated at its start. */
+static void new_frame(vrOwner *o, const vrGrid *g)
+{
+    int i;
+    o->span_start = g->t0;
+    o->span_end = g->T;
+    for (i = 0; i < o->bodycap; i++) update_box(o, i);
+    for (i = 0; i < o->npair; i++)
+        if ((o->hot[i] & HOT_DORMANT) && !pair_apart(o, i)) {
+            o->hot[i] &= ~HOT_DORMANT;
+            flag(o, i);
+        }
+}
+
 void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
 {
     int i, j, k = 0;
+    for (i = 0; i < n; i++)
+        if (ids[i] < o->bodycap && o->body[ids[i]]) update_box(o, ids[i]);
     for (i = 0; i < n; i++) {
-        const vrIntList *l;
-        if (ids[i] >= o->bodycap || !o->body[ids[i]]) continue;
-        l = &o->body_pairs[ids[i]];
+        int id = ids[i], now_frozen;
+        const vrIntList *l, *partner;
+        if (id >= o->bodycap || !o->body[id]) continue;
+        l = &o->body_pairs[id];
+        partner = &o->body_partners[id];
+        /* a pair's scheduling only changes when a body freezes or thaws */
+        now_frozen = frozen(o->body[id]);
+        if (o->was_frozen[id] != now_frozen)
+            for (j = 0; j < l->n; j++) update_schedule(o, l->v[j]);
+        o->was_frozen[id] = (unsigned char)now_frozen;
+        /* each key was for the old motion: the pair is evaluated, or dormant */
         for (j = 0; j < l->n; j++) {
-            update_schedule(o, l->v[j]);
-            flag(o, l->v[j]);
+            int pi = l->v[j];
+            if (apart(o, pi, id, partner->v[j])) {
+                o->hot[pi] |= HOT_DORMANT;
+            } else {
+                o->hot[pi] &= ~HOT_DORMANT;
+                flag(o, pi);
+            }
         }
     }
     for (i = 0; i < o->npending; i++)
@@ -317,6 +422,7 @@ void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
 /* a pair's status and key after an evaluation, and where it waits */
 static void settle(vrOwner *o, int pi, int inside, double key)
 {
+    o->hot[pi] = inside ? HOT_INSIDE : 0;
     o->pair[pi].inside = inside;
     o->pair[pi].key = key;
     place(o, pi);
@@ -579,8 +685,6 @@ static int impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
     return 1;
 }
 
-static int has_support(const vrBody *x, int partner);
-
 /* heap = 0 is the thesis's ablation: every pair looked at fully, every
  * step; an inside or support pair always is (its events need the contact) */
 static int cheap_look_allowed(const vrOwner *o, const vrPair *p)
@@ -743,7 +847,8 @@ static void collect_due(vrOwner *o, double t)
     while ((id = vrHeap_Top(&o->heap, &key)) >= 0 && key <= t) {
         vrHeap_Pop(&o->heap);
         o->heap_pops++;
-        list_push(&o->due, id);
+        if (!(o->hot[id] & HOT_DORMANT) && pair_apart(o, id)) o->hot[id] |= HOT_DORMANT;
+        if (!(o->hot[id] & HOT_DORMANT)) list_push(&o->due, id);
     }
 }
 
@@ -752,7 +857,8 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     long k = 1;
     int i;
     o->nfound = 0;
-    o->span_end = g->T;
+    if (!(g->T == o->span_end)) new_frame(o, g);
+    o->span_start = g->t0;
     span_start(o, g->t0, allow_instant);
     if (o->nfound) return take_first(o, g->t0, ev);
     while (k <= g->n) {

@@ -69,6 +69,41 @@ void vrBody_Position(const vrBody *b, double t, vec3 *x)
     }
 }
 
+static void widen(vec3 *lo, vec3 *hi, vec3 x)
+{
+    *lo = vec3_make(fmin(lo->x, x.x), fmin(lo->y, x.y), fmin(lo->z, x.z));
+    *hi = vec3_make(fmax(hi->x, x.x), fmax(hi->y, x.y), fmax(hi->z, x.z));
+}
+
+/* Along each axis the path is a parabola until the speed cap and a line
+ * after it: its extremes are at t1, t2, the cap, or where that axis's
+ * velocity turns round before the cap. */
+void vrBody_PathBox(const vrBody *b, double t1, double t2, vec3 *lo, vec3 *hi)
+{
+    const vrMotion *m = &b->m;
+    const double v0[3] = { m->v0.x, m->v0.y, m->v0.z }, a[3] = { m->a.x, m->a.y, m->a.z };
+    double cap = m->t0 + m->tcap;
+    vec3 x;
+    int k;
+    vrBody_Position(b, t1, lo);
+    *hi = *lo;
+    vrBody_Position(b, t2, &x);
+    widen(lo, hi, x);
+    if (cap > t1 && cap < t2) {
+        vrBody_Position(b, cap, &x);
+        widen(lo, hi, x);
+    }
+    for (k = 0; k < 3; k++) {
+        double turn;
+        if (a[k] == 0) continue;
+        turn = m->t0 - v0[k] / a[k];
+        if (turn > t1 && turn < t2 && turn < cap) {
+            vrBody_Position(b, turn, &x);
+            widen(lo, hi, x);
+        }
+    }
+}
+
 void vrBody_Velocity(const vrBody *b, double t, vec3 *v)
 {
     double tau = t - b->m.t0;

@@ -184,6 +184,41 @@ static int test_isotropic_spin_is_exact(void)
     return 0;
 }
 
+/* the box the broadphase uses: every position of the path in [t1, t2] is
+ * inside it, and it is no larger than the path (up a thrown ball's apex,
+ * past the speed cap) */
+static int test_path_box_is_the_paths_extent(void)
+{
+    vrBody b;
+    vrFlight f = flight(vec3_make(0, 0, -9.8), 6, 4);
+    int trial, i;
+    unsigned s = 12345;
+    box_body(&b, 1, 0.1, 0.1, 0.1);
+    for (trial = 0; trial < 200; trial++) {
+        vec3 v, lo, hi, slo, shi, x;
+        double t1, t2;
+        s = s * 1103515245u + 12345u; v.x = (double)(s >> 16 & 1023) / 128.0 - 4;
+        s = s * 1103515245u + 12345u; v.y = (double)(s >> 16 & 1023) / 128.0 - 4;
+        s = s * 1103515245u + 12345u; v.z = (double)(s >> 16 & 1023) / 128.0 - 4;
+        s = s * 1103515245u + 12345u; t1 = (double)(s >> 16 & 1023) / 1024.0;
+        t2 = t1 + 0.05 + (trial % 7) * 0.2;
+        vrBody_Anchor(&b, 0.25, vec3_make(1, -2, 3), v, quat_identity(), vec3_zero(), &f);
+        vrBody_PathBox(&b, t1, t2, &lo, &hi);
+        vrBody_Position(&b, t1, &slo);
+        shi = slo;
+        for (i = 0; i <= 4000; i++) {
+            vrBody_Position(&b, t1 + (t2 - t1) * i / 4000.0, &x);
+            ENSURE(x.x >= lo.x - 1e-12 && x.y >= lo.y - 1e-12 && x.z >= lo.z - 1e-12);
+            ENSURE(x.x <= hi.x + 1e-12 && x.y <= hi.y + 1e-12 && x.z <= hi.z + 1e-12);
+            slo = vec3_make(fmin(slo.x, x.x), fmin(slo.y, x.y), fmin(slo.z, x.z));
+            shi = vec3_make(fmax(shi.x, x.x), fmax(shi.y, x.y), fmax(shi.z, x.z));
+        }
+        /* samples 1/4000 of the span apart miss the extremes by < 6 m/s x that */
+        ENSURE(vec3_len(vec3_sub(lo, slo)) + vec3_len(vec3_sub(hi, shi)) < 6 * (t2 - t1) / 4000.0 * 2);
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     test_init(argc, argv);
@@ -195,5 +230,6 @@ int main(int argc, char **argv)
     RUN_TEST(test_symmetric_top_matches_integrator);
     RUN_TEST(test_pose_is_pure_function_of_time);
     RUN_TEST(test_isotropic_spin_is_exact);
+    RUN_TEST(test_path_box_is_the_paths_extent);
     return test_summary();
 }
