@@ -37,11 +37,11 @@ typedef struct vrPair {
  * pair is dormant, so an event re-keys only the pairs of its bodies that
  * could meet (a broadphase, with heap = 1).  Static bodies have no box:
  * their pairs are always scheduled. */
-typedef struct vrBox { vec3 lo, hi; int valid; } vrBox;
+typedef struct vrBox { vec3 lo, hi; int valid; long long frame; } vrBox;   /* made when first needed in a frame */
 
 /* per pair, in a byte array an event can sweep without touching the pairs
  * themselves (a thousand bodies make half a million pairs) */
-enum { HOT_DORMANT = 1, HOT_INSIDE = 2 };
+enum { HOT_DORMANT = 1, HOT_INSIDE = 2, HOT_LISTED = 4 /* in the dormant list */ };
 
 /* what an evaluation changed, so Advance can take it back */
 typedef struct vrUndo {
@@ -63,6 +63,8 @@ struct vrOwner {
     vrBox *box;               /* by id */
     unsigned char *was_frozen; /* by id: frozen when its pairs were last scheduled (2: not yet) */
     unsigned char *hot;       /* by pair: HOT_* */
+    vrIntList dormant;        /* pairs made dormant this frame (some may have woken since) */
+    long long frame;          /* counts frames, for the boxes */
     int hotcap;
     int bodycap, nheld;
     vrPair *pair;
@@ -145,6 +147,7 @@ void vrOwner_Free(vrOwner *o)
     free(o->box);
     free(o->was_frozen);
     free(o->hot);
+    free(o->dormant.v);
     free(o->body);
     free(o->pair);
     vrHeap_Free(&o->heap);
@@ -233,6 +236,7 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
         if (grow((void **)&o->was_frozen, &cap, id + 1, sizeof *o->was_frozen) != 0) return -1;
         for (i = old; i < cap; i++) {
             o->box[i].valid = 0;
+            o->box[i].frame = -1;
             o->was_frozen[i] = 2;
             o->body[i] = NULL;
             o->body_pairs[i].n = o->body_pairs[i].cap = 0;
@@ -300,6 +304,7 @@ static void reindex(vrOwner *o)
     vrHeap_Init(&o->heap);
     o->active.n = 0;
     o->flagged.n = 0;
+    o->dormant.n = 0;
     for (i = 0; i < o->bodycap; i++) o->body_pairs[i].n = o->body_partners[i].n = 0;
     for (i = 0; i < o->npair; i++) {
         vrPair *p = &o->pair[i];
@@ -307,7 +312,7 @@ static void reindex(vrOwner *o)
         list_push(&o->body_pairs[p->b], i);
         list_push(&o->body_partners[p->a], p->b);
         list_push(&o->body_partners[p->b], p->a);
-        o->hot[i] = p->inside ? HOT_INSIDE : 0;
+        o->hot[i] = p->inside ? HOT_INSIDE : 0;   /* the dormant list is emptied below */
         p->flagged = 0;
         p->active = -1;
         flag(o, i);
@@ -345,6 +350,7 @@ static void update_box(vrOwner *o, int id)
     vrBox *x = &o->box[id];
     double t1, size, pad;
     x->valid = 0;
+    x->frame = o->frame;
     if (!b || b->is_static || !(o->span_start <= o->span_end)) return;
     t1 = fmax(b->m.t0, o->span_start);
     if (!(t1 <= o->span_end)) return;
@@ -358,31 +364,54 @@ static void update_box(vrOwner *o, int id)
 
 static int has_support(const vrBody *x, int partner);
 
-/* pair pi of bodies x and y cannot come within d before the frame ends */
-static int apart(const vrOwner *o, int pi, int x, int y)
+static const vrBox *box_of(vrOwner *o, int id)
 {
-    const vrBox *a = &o->box[x], *b = &o->box[y];
-    if (!o->p.use_heap || (o->hot[pi] & HOT_INSIDE) || !a->valid || !b->valid) return 0;
+    if (o->box[id].frame != o->frame) update_box(o, id);
+    return &o->box[id];
+}
+
+/* pair pi of bodies x and y cannot come within d before the frame ends */
+static int apart(vrOwner *o, int pi, int x, int y)
+{
+    const vrBox *a, *b;
+    if (!o->p.use_heap || (o->hot[pi] & HOT_INSIDE)) return 0;
+    a = box_of(o, x);
+    b = box_of(o, y);
+    if (!a->valid || !b->valid) return 0;
     if (!(a->hi.x < b->lo.x || b->hi.x < a->lo.x || a->hi.y < b->lo.y || b->hi.y < a->lo.y
           || a->hi.z < b->lo.z || b->hi.z < a->lo.z)) return 0;
     return !has_support(o->body[x], y) && !has_support(o->body[y], x);
 }
 
-static int pair_apart(const vrOwner *o, int pi) { return apart(o, pi, o->pair[pi].a, o->pair[pi].b); }
+static int pair_apart(vrOwner *o, int pi) { return apart(o, pi, o->pair[pi].a, o->pair[pi].b); }
 
-/* A new frame: every moving body's box, and dormant pairs that could meet
- * in it are evaluated at its start. */
+static void make_dormant(vrOwner *o, int pi)
+{
+    if (!(o->hot[pi] & HOT_LISTED) && list_push(&o->dormant, pi) != 0) {
+        flag(o, pi);    /* no memory for the list: evaluated instead */
+        return;
+    }
+    o->hot[pi] |= HOT_DORMANT | HOT_LISTED;
+}
+
+/* A new frame: new boxes (as they are needed), and the dormant pairs that
+ * could meet in it are evaluated at its start. */
 static void new_frame(vrOwner *o, const vrGrid *g)
 {
-    int i;
+    int i, k = 0;
+    o->frame++;
     o->span_start = g->t0;
     o->span_end = g->T;
-    for (i = 0; i < o->bodycap; i++) update_box(o, i);
-    for (i = 0; i < o->npair; i++)
-        if ((o->hot[i] & HOT_DORMANT) && !pair_apart(o, i)) {
-            o->hot[i] &= ~HOT_DORMANT;
-            flag(o, i);
+    for (i = 0; i < o->dormant.n; i++) {
+        int pi = o->dormant.v[i];
+        if ((o->hot[pi] & HOT_DORMANT) && pair_apart(o, pi)) {
+            o->dormant.v[k++] = pi;
+            continue;
         }
+        if (o->hot[pi] & HOT_DORMANT) flag(o, pi);
+        o->hot[pi] &= (unsigned char)~(HOT_DORMANT | HOT_LISTED);
+    }
+    o->dormant.n = k;
 }
 
 void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
@@ -405,9 +434,9 @@ void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
         for (j = 0; j < l->n; j++) {
             int pi = l->v[j];
             if (apart(o, pi, id, partner->v[j])) {
-                o->hot[pi] |= HOT_DORMANT;
+                make_dormant(o, pi);
             } else {
-                o->hot[pi] &= ~HOT_DORMANT;
+                o->hot[pi] &= (unsigned char)~HOT_DORMANT;
                 flag(o, pi);
             }
         }
@@ -422,7 +451,7 @@ void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
 /* a pair's status and key after an evaluation, and where it waits */
 static void settle(vrOwner *o, int pi, int inside, double key)
 {
-    o->hot[pi] = inside ? HOT_INSIDE : 0;
+    o->hot[pi] = (unsigned char)((o->hot[pi] & HOT_LISTED) | (inside ? HOT_INSIDE : 0));
     o->pair[pi].inside = inside;
     o->pair[pi].key = key;
     place(o, pi);
@@ -847,7 +876,7 @@ static void collect_due(vrOwner *o, double t)
     while ((id = vrHeap_Top(&o->heap, &key)) >= 0 && key <= t) {
         vrHeap_Pop(&o->heap);
         o->heap_pops++;
-        if (!(o->hot[id] & HOT_DORMANT) && pair_apart(o, id)) o->hot[id] |= HOT_DORMANT;
+        if (!(o->hot[id] & HOT_DORMANT) && pair_apart(o, id)) make_dormant(o, id);
         if (!(o->hot[id] & HOT_DORMANT)) list_push(&o->due, id);
     }
 }
