@@ -872,18 +872,25 @@ static double seg_dist(vrP2 a, vrP2 b)
     return hypot(a.x + s * ex, a.y + s * ey);
 }
 
-/* Andrew's monotone chain, then edge tests */
-double vrShape_Extent(const vrShape *s, const vrPose *p, vec3 u)
+vec3 vrShape_Support(const vrShape *s, const vrPose *p, vec3 dir)
 {
-    vec3 ub;
-    double best = -INFINITY;
-    int i;
-    if (s->kind == VR_SHAPE_SPHERE) return vec3_dot(u, p->p) + s->radius;
-    ub = mat33_tmulv(&p->R, u);     /* u in the body frame: one rotation, not one per vertex */
-    for (i = 0; i < s->poly->nv; i++) best = fmax(best, vec3_dot(ub, s->poly->vert[i]));
-    return best + vec3_dot(u, p->p);
+    vec3 d;
+    int i, best = 0;
+    double m;
+    if (s->kind == VR_SHAPE_SPHERE) return vec3_madd(p->p, s->radius, vec3_normalize(dir));
+    d = mat33_tmulv(&p->R, dir);     /* in the body frame: one rotation, not one per vertex */
+    m = vec3_dot(d, s->poly->vert[0]);
+    for (i = 1; i < s->poly->nv; i++) {
+        double h = vec3_dot(d, s->poly->vert[i]);
+        if (h > m) {
+            m = h;
+            best = i;
+        }
+    }
+    return vrPose_apply(p, s->poly->vert[best]);
 }
 
+/* Andrew's monotone chain, then edge tests */
 int vrRegion_Contains(const vec3 *pts, int n, vec3 nrm, vec3 q, double tol)
 {
     vec3 t1 = vec3_orthogonal(nrm), t2 = vec3_cross(nrm, t1);

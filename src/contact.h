@@ -93,10 +93,10 @@ int vrContact_Region(const vrShape *a, const vrPose *pa, const vrShape *b, const
 int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
                     vrWalkCache *cache, double *dist, vec3 *n);
 
-/* How far the posed shape reaches along the unit direction u: the largest
- * u.x over its points (a sphere: u.centre + radius; a polyhedron: over its
- * vertices, so O(vertices)). */
-double vrShape_Extent(const vrShape *s, const vrPose *p, vec3 u);
+/* The posed shape's point farthest along dir (non-zero): a sphere's surface
+ * point, a polyhedron's vertex (the first of equals; O(vertices)).  libccd's
+ * support function, and how far a shape reaches along a direction. */
+vec3 vrShape_Support(const vrShape *s, const vrPose *p, vec3 dir);
 
 /* Is q inside the convex hull of pts (n of them) seen along nrm, within tol?  (SPEC 3.1: a support's centre of mass over
  * its contact region.) */

@@ -355,7 +355,7 @@ static void update_box(vrOwner *o, int id)
     t1 = fmax(b->m.t0, o->span_start);
     if (!(t1 <= o->span_end)) return;
     vrBody_PathBox(b, t1, o->span_end, &x->lo, &x->hi);
-    size = fmax(fmax(fmax(fabs(x->lo.x), fabs(x->lo.y)), fmax(fabs(x->lo.z), fabs(x->hi.x))), fmax(fabs(x->hi.y), fabs(x->hi.z)));
+    size = fmax(vec3_maxabs(x->lo), vec3_maxabs(x->hi));
     pad = b->r_out + 0.5 * o->p.d + 1e-9 + 1e-12 * size;   /* far above the rounding of a position */
     x->lo = vec3_sub(x->lo, vec3_make(pad, pad, pad));
     x->hi = vec3_add(x->hi, vec3_make(pad, pad, pad));
@@ -363,6 +363,12 @@ static void update_box(vrOwner *o, int id)
 }
 
 static int has_support(const vrBody *x, int partner);
+
+/* either body of the pair rests on (or slides over) the other */
+static int supported_pair(const vrOwner *o, int a, int b)
+{
+    return has_support(o->body[a], b) || has_support(o->body[b], a);
+}
 
 static const vrBox *box_of(vrOwner *o, int id)
 {
@@ -380,7 +386,7 @@ static int apart(vrOwner *o, int pi, int x, int y)
     if (!a->valid || !b->valid) return 0;
     if (!(a->hi.x < b->lo.x || b->hi.x < a->lo.x || a->hi.y < b->lo.y || b->hi.y < a->lo.y
           || a->hi.z < b->lo.z || b->hi.z < a->lo.z)) return 0;
-    return !has_support(o->body[x], y) && !has_support(o->body[y], x);
+    return !supported_pair(o, x, y);
 }
 
 static int pair_apart(vrOwner *o, int pi) { return apart(o, pi, o->pair[pi].a, o->pair[pi].b); }
@@ -516,11 +522,21 @@ static void flush_normal(const vrOwner *o, const vrPair *p, const vrPose *pa, co
         for (i = 0; i < x->nsupport; i++) {
             vec3 m = x->support[i].n;
             if (x->support[i].partner == (side ? p->a : p->b) || vec3_dot(n_yx, m) >= 1 - 1e-12) continue;
-            if (vrShape_Extent(&y->shape, py, m) > -vrShape_Extent(&x->shape, px, vec3_neg(m)) + CONTAIN_TOL) continue;
+            double y_top = vec3_dot(m, vrShape_Support(&y->shape, py, m));
+            double x_bottom = vec3_dot(m, vrShape_Support(&x->shape, px, vec3_neg(m)));
+            if (y_top > x_bottom + CONTAIN_TOL) continue;
             c->n = side ? m : vec3_neg(m);
             return;
         }
     }
+}
+
+/* the query that events are decided from: with the contact region, and
+ * the flush-surface normal */
+static void event_query(vrOwner *o, vrPair *p, double t, vrPose *pa, vrPose *pb, vrContact *c)
+{
+    query(o, p, t, 1, pa, pb, c);
+    flush_normal(o, p, pa, pb, c);
 }
 
 /* the first time in (lo, hi] with distance <= d: exactly BISECTIONS halvings,
@@ -705,9 +721,8 @@ static int impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
     vrPose pa, pb;
     vrContact c;
     vrApproach ap;
-    query(o, p, tau, 1, &pa, &pb, &c);
+    event_query(o, p, tau, &pa, &pb, &c);
     if (c.npoints == 0) return 0;
-    flush_normal(o, p, &pa, &pb, &c);
     approach(o, p, tau, &pa, &pb, &c, &ap);
     if (ap.umin >= 0) return 0;
     impulse_event(o, ev, VR_EV_IMPACT, tau, p, &c, &ap);
@@ -718,7 +733,7 @@ static int impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
  * step; an inside or support pair always is (its events need the contact) */
 static int cheap_look_allowed(const vrOwner *o, const vrPair *p)
 {
-    return o->p.use_heap && !p->inside && !has_support(o->body[p->a], p->b) && !has_support(o->body[p->b], p->a);
+    return o->p.use_heap && !p->inside && !supported_pair(o, p->a, p->b);
 }
 
 /* the walk's distance when it is clear of the envelope: outside, no event,
@@ -788,9 +803,8 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
         return 1;
     }
     settle(o, pi, 1, t);
-    query(o, p, t, 1, &pa, &pb, &c);
+    event_query(o, p, t, &pa, &pb, &c);
     o->checks--;                         /* the same query again, with the region */
-    flush_normal(o, p, &pa, &pb, &c);
     return inside_events(o, ev, t, p, &pa, &pb, &c);
 }
 
@@ -914,8 +928,7 @@ static int candidate(vrOwner *o, const vrPair *p, int side, double t, vrCandidat
     vrApproach ap;
     vrCandidate *k;
     if (!(frozen(Y) || Y->nsupport > 0) || vec3_len2(g) == 0) return 0;
-    query(o, (vrPair *)p, t, 1, &pa, &pb, &c);
-    flush_normal(o, p, &pa, &pb, &c);
+    event_query(o, (vrPair *)p, t, &pa, &pb, &c);
     n_yx = side ? c.n : vec3_neg(c.n);
     if (c.npoints == 0 || vec3_dot(g, n_yx) > -1e-6 * vec3_len(g)) return 0;
     approach(o, p, t, &pa, &pb, &c, &ap);

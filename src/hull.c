@@ -1126,7 +1126,7 @@ static int grid_alloc(Grid *g, const vec3 *pts, int n, double r)
     g->r = r;
     g->lo = pts[0];
     for (i = 1; i < n; i++)
-        g->lo = vec3_make(fmin(g->lo.x, pts[i].x), fmin(g->lo.y, pts[i].y), fmin(g->lo.z, pts[i].z));
+        g->lo = vec3_min(g->lo, pts[i]);
     return 0;
 }
 

@@ -69,12 +69,6 @@ void vrBody_Position(const vrBody *b, double t, vec3 *x)
     }
 }
 
-static void widen(vec3 *lo, vec3 *hi, vec3 x)
-{
-    *lo = vec3_make(fmin(lo->x, x.x), fmin(lo->y, x.y), fmin(lo->z, x.z));
-    *hi = vec3_make(fmax(hi->x, x.x), fmax(hi->y, x.y), fmax(hi->z, x.z));
-}
-
 /* Along each axis the path is a parabola until the speed cap and a line
  * after it: its extremes are at t1, t2, the cap, or where that axis's
  * velocity turns round before the cap. */
@@ -88,10 +82,12 @@ void vrBody_PathBox(const vrBody *b, double t1, double t2, vec3 *lo, vec3 *hi)
     vrBody_Position(b, t1, lo);
     *hi = *lo;
     vrBody_Position(b, t2, &x);
-    widen(lo, hi, x);
+    *lo = vec3_min(*lo, x);
+    *hi = vec3_max(*hi, x);
     if (cap > t1 && cap < t2) {
         vrBody_Position(b, cap, &x);
-        widen(lo, hi, x);
+        *lo = vec3_min(*lo, x);
+        *hi = vec3_max(*hi, x);
     }
     for (k = 0; k < 3; k++) {
         double turn;
@@ -99,7 +95,8 @@ void vrBody_PathBox(const vrBody *b, double t1, double t2, vec3 *lo, vec3 *hi)
         turn = m->t0 - v0[k] / a[k];
         if (turn > t1 && turn < t2 && turn < cap) {
             vrBody_Position(b, turn, &x);
-            widen(lo, hi, x);
+            *lo = vec3_min(*lo, x);
+            *hi = vec3_max(*hi, x);
         }
     }
 }

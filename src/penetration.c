@@ -24,29 +24,10 @@ typedef struct CcdObject { const vrShape *shape; const vrPose *pose; } CcdObject
 static vec3 from_ccd(const ccd_vec3_t *v) { return vec3_make(v->v[0], v->v[1], v->v[2]); }
 static void to_ccd(vec3 a, ccd_vec3_t *v) { ccdVec3Set(v, a.x, a.y, a.z); }
 
-static vec3 poly_support(const vrPolyhedron *p, const vrPose *pose, vec3 dir)
-{
-    vec3 d = mat33_tmulv(&pose->R, dir);
-    int i, best = 0;
-    double m = vec3_dot(d, p->vert[0]);
-    for (i = 1; i < p->nv; i++) {
-        double s = vec3_dot(d, p->vert[i]);
-        if (s > m) {
-            m = s;
-            best = i;
-        }
-    }
-    return vrPose_apply(pose, p->vert[best]);
-}
-
 static void support(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out)
 {
     const CcdObject *o = obj;
-    vec3 d = from_ccd(dir);
-    if (o->shape->kind == VR_SHAPE_SPHERE)
-        to_ccd(vec3_madd(o->pose->p, o->shape->radius, vec3_normalize(d)), out);
-    else
-        to_ccd(poly_support(o->shape->poly, o->pose, d), out);
+    to_ccd(vrShape_Support(o->shape, o->pose, from_ccd(dir)), out);
 }
 
 /* bodies are built around their centre of mass: the pose origin */

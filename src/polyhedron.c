@@ -33,8 +33,8 @@ double vrGeom_Size(const vec3 *pts, int n)
     if (n <= 0) return 0;
     lo = hi = pts[0];
     for (i = 1; i < n; i++) {
-        lo = vec3_make(fmin(lo.x, pts[i].x), fmin(lo.y, pts[i].y), fmin(lo.z, pts[i].z));
-        hi = vec3_make(fmax(hi.x, pts[i].x), fmax(hi.y, pts[i].y), fmax(hi.z, pts[i].z));
+        lo = vec3_min(lo, pts[i]);
+        hi = vec3_max(hi, pts[i]);
     }
     return vec3_dist(lo, hi);
 }

@@ -42,6 +42,8 @@ static inline vec3 vec3_normalize(vec3 a)
 static inline vec3 vec3_lerp(vec3 a, vec3 b, double t) { return vec3_madd(a, t, vec3_sub(b, a)); }
 static inline double vec3_get(vec3 a, int i) { return i == 0 ? a.x : i == 1 ? a.y : a.z; }
 static inline int vec3_isfinite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+static inline vec3 vec3_min(vec3 a, vec3 b) { return vec3_make(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
+static inline vec3 vec3_max(vec3 a, vec3 b) { return vec3_make(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
 static inline double vec3_maxabs(vec3 a)
 {
     double m = fabs(a.x);
