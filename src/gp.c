@@ -9,6 +9,7 @@
  * with the same operations whatever the heap mode or the owner, so the
  * outcome is the same; the heap only skips checks that cannot matter.
  */
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include "gp.h"
@@ -35,9 +36,11 @@ typedef struct vrPair {
  * centre's path, padded by r_out and half the envelope).  Two moving bodies
  * whose boxes are apart cannot come within d before the frame ends: their
  * pair is dormant, so an event re-keys only the pairs of its bodies that
- * could meet (a broadphase, with heap = 1).  Static bodies have no box:
- * their pairs are always scheduled. */
+ * could meet (a broadphase, with heap = 1).  A static body's box is its
+ * surface's bounding box, padded the same way, so a body's pairs with the
+ * furniture it is nowhere near sleep as well. */
 typedef struct vrBox { vec3 lo, hi; int valid; long long frame; } vrBox;   /* made when first needed in a frame */
+#define BOX_FOR_GOOD LLONG_MAX   /* vrBox.frame of a static body's box: kept until the body or d changes */
 
 /* per pair, in a byte array an event can sweep without touching the pairs
  * themselves (a thousand bodies make half a million pairs) */
@@ -215,6 +218,7 @@ void vrOwner_SetParams(vrOwner *o, const vrParams *p)
     o->p = *p;
     o->v_rest = sqrt(2.0 * vec3_len(p->flight.accel) * p->d);
     o->span_end = NAN;                    /* the boxes are padded by d: made anew */
+    for (i = 0; i < o->bodycap; i++) o->box[i].frame = -1;
     for (i = 0; i < o->npair; i++) {
         place(o, i);
         flag(o, i);
@@ -248,6 +252,7 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
     }
     if (!o->body[id]) o->nheld++;
     o->body[id] = b;
+    o->box[id].frame = -1;
     return 0;
 }
 
@@ -343,7 +348,23 @@ static int event_involves(const vrEvent *ev, const int *ids, int n)
     return 0;
 }
 
-/* the box of body id over [its anchor or the span start, the frame's end] */
+/* the exact bounding box of a static body's surface: its support points
+ * along the six axis directions */
+static void static_extent(vrBody *b, vec3 *lo, vec3 *hi)
+{
+    const vrShape *s = &b->shape;
+    vrPose p;
+    vrBody_Pose(b, b->m.t0, &p);
+    lo->x = vrShape_Support(s, &p, vec3_make(-1, 0, 0)).x;
+    lo->y = vrShape_Support(s, &p, vec3_make(0, -1, 0)).y;
+    lo->z = vrShape_Support(s, &p, vec3_make(0, 0, -1)).z;
+    hi->x = vrShape_Support(s, &p, vec3_make(1, 0, 0)).x;
+    hi->y = vrShape_Support(s, &p, vec3_make(0, 1, 0)).y;
+    hi->z = vrShape_Support(s, &p, vec3_make(0, 0, 1)).z;
+}
+
+/* the box of body id over [its anchor or the span start, the frame's end];
+ * a static body's wherever it is */
 static void update_box(vrOwner *o, int id)
 {
     vrBody *b = o->body[id];
@@ -351,12 +372,19 @@ static void update_box(vrOwner *o, int id)
     double t1, size, pad;
     x->valid = 0;
     x->frame = o->frame;
-    if (!b || b->is_static || !(o->span_start <= o->span_end)) return;
-    t1 = fmax(b->m.t0, o->span_start);
-    if (!(t1 <= o->span_end)) return;
-    vrBody_PathBox(b, t1, o->span_end, &x->lo, &x->hi);
+    if (!b || !(o->span_start <= o->span_end)) return;
+    if (b->is_static) {
+        static_extent(b, &x->lo, &x->hi);
+        x->frame = BOX_FOR_GOOD;
+        pad = 0.0;
+    } else {
+        t1 = fmax(b->m.t0, o->span_start);
+        if (!(t1 <= o->span_end)) return;
+        vrBody_PathBox(b, t1, o->span_end, &x->lo, &x->hi);
+        pad = b->r_out;
+    }
     size = fmax(vec3_maxabs(x->lo), vec3_maxabs(x->hi));
-    pad = b->r_out + 0.5 * o->p.d + 1e-9 + 1e-12 * size;   /* far above the rounding of a position */
+    pad += 0.5 * o->p.d + 1e-9 + 1e-12 * size;   /* far above the rounding of a position */
     x->lo = vec3_sub(x->lo, vec3_make(pad, pad, pad));
     x->hi = vec3_add(x->hi, vec3_make(pad, pad, pad));
     x->valid = 1;
@@ -372,7 +400,7 @@ static int supported_pair(const vrOwner *o, int a, int b)
 
 static const vrBox *box_of(vrOwner *o, int id)
 {
-    if (o->box[id].frame != o->frame) update_box(o, id);
+    if (o->box[id].frame != o->frame && o->box[id].frame != BOX_FOR_GOOD) update_box(o, id);
     return &o->box[id];
 }
 
@@ -791,7 +819,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     vrContact c;
     remember(o, pi, t);
     if (clear_by_spheres(o, pi, t) || clear_by_walk(o, pi, t)) return 0;
-    query(o, p, t, 0, &pa, &pb, &c);
+    query(o, p, t, 1, &pa, &pb, &c);   /* the region is only made inside the envelope */
     p->t_check = t;
     if (c.dist > o->p.d) {
         int was_inside = p->inside;
@@ -803,8 +831,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
         return 1;
     }
     settle(o, pi, 1, t);
-    event_query(o, p, t, &pa, &pb, &c);
-    o->checks--;                         /* the same query again, with the region */
+    flush_normal(o, p, &pa, &pb, &c);    /* what event_query adds */
     return inside_events(o, ev, t, p, &pa, &pb, &c);
 }
 
@@ -1051,19 +1078,113 @@ static int respond_pushout(vrOwner *o, const vrEvent *ev, vrUpdate *up)
     return 0;
 }
 
-static int respond_support(vrOwner *o, const vrEvent *ev, vrUpdate *up)
+static int find_pair(const vrOwner *o, int a, int b)
+{
+    const vrIntList *l = &o->body_pairs[a];
+    int i;
+    for (i = 0; i < l->n; i++)
+        if (o->pair[l->v[i]].a == a && o->pair[l->v[i]].b == b) return l->v[i];
+    return -1;
+}
+
+/* Up to three corners of a contact region that span it: the first point,
+ * the one farthest from it, and the one farthest from the line of those
+ * two (a segment or a single point when the region is one). */
+#define SPAN_TOL 1e-7   /* m: thinner than this, a region is a segment (or a point) */
+static int region_corners(const vrContact *c, vec3 corner[3])
+{
+    int i, k = 1;
+    double best = SPAN_TOL;
+    vec3 e;
+    corner[0] = c->point[0];
+    for (i = 1; i < c->npoints; i++) {
+        double l = vec3_dist(c->point[i], corner[0]);
+        if (l > best) best = l, corner[1] = c->point[i], k = 2;
+    }
+    if (k < 2) return k;
+    e = vec3_normalize(vec3_sub(corner[1], corner[0]));
+    best = SPAN_TOL;
+    for (i = 1; i < c->npoints; i++) {
+        vec3 r = vec3_sub(c->point[i], corner[0]);
+        double h = vec3_len(vec3_madd(r, -vec3_dot(r, e), e));
+        if (h > best) best = h, corner[2] = c->point[i], k = 3;
+    }
+    return k;
+}
+
+/* Gaussian elimination with partial pivoting of a k x k system (k <= 3)
+ * given as rows [a b]; the solution replaces b (column 3) */
+static int solve_small(double A[3][4], int k)
+{
+    int i, j, c, piv;
+    for (c = 0; c < k; c++) {
+        for (piv = c, i = c + 1; i < k; i++)
+            if (fabs(A[i][c]) > fabs(A[piv][c])) piv = i;
+        if (!(fabs(A[piv][c]) > 0)) return -1;
+        for (j = 0; j < 4; j++) {
+            double t = A[c][j];
+            A[c][j] = A[piv][j];
+            A[piv][j] = t;
+        }
+        for (i = 0; i < k; i++) {
+            double f;
+            if (i == c) continue;
+            f = A[i][c] / A[c][c];
+            for (j = c; j < 4; j++) A[i][j] -= f * A[c][j];
+        }
+    }
+    for (i = 0; i < k; i++) A[i][3] /= A[i][i];
+    return 0;
+}
+
+/* Support begins (SPEC 3.1: what is left of the normal relative velocity
+ * goes): an e = 0 contact over the whole region.  Normal impulses at the
+ * corners that span it make every region point's normal velocity zero, so
+ * a box that comes down flat keeps no rocking spin below v_eps that would
+ * tip it onto an edge later (and a sphere, one point below its centre,
+ * loses only its normal velocity).  The partner does not move, as a support
+ * is static, resting or supported. */
+static void settle_on_support(vrOwner *o, const vrEvent *ev, vrBodyState *st)
 {
     vrBody *x = o->body[ev->body], *y = o->body[ev->partner];
+    int pi = find_pair(o, ev->a, ev->b), k, i, j;
+    vrPose pa, pb, px, py;
+    vrContact c;
+    vec3 corner[3], r[3], w;
+    mat33 Iinv;
+    double A[3][4];
+    vrBody_Pose(x, ev->t, &px);
+    vrBody_Pose(y, ev->t, &py);
+    Iinv = vrBody_InvInertiaWorld(x, &px);
+    if (pi < 0) return;
+    event_query(o, &o->pair[pi], ev->t, &pa, &pb, &c);
+    if (c.npoints == 0) return;
+    k = region_corners(&c, corner);
+    w = vrBody_Omega(x, &px);
+    if (x->rot != VR_ROT_NONE || vec3_len2(st->L) > 0) w = mat33_mulv(&Iinv, st->L);
+    for (i = 0; i < k; i++) {
+        vec3 u = vec3_add(st->v, vec3_cross(w, r[i] = vec3_sub(corner[i], px.p)));
+        A[i][3] = -vec3_dot(ev->n, vec3_sub(u, vrBody_PointVelocity(y, ev->t, &py, corner[i])));
+    }
+    for (i = 0; i < k; i++)
+        for (j = 0; j < k; j++)
+            A[i][j] = x->inv_mass + vec3_dot(ev->n, vec3_cross(mat33_mulv(&Iinv, vec3_cross(r[j], ev->n)), r[i]));
+    if (solve_small(A, k) != 0) return;
+    for (i = 0; i < k; i++) {
+        vec3 J = vec3_scale(ev->n, A[i][3]);
+        st->v = vec3_madd(st->v, x->inv_mass, J);
+        st->L = vec3_add(st->L, vec3_cross(r[i], J));
+    }
+}
+
+static int respond_support(vrOwner *o, const vrEvent *ev, vrUpdate *up)
+{
+    vrBody *x = o->body[ev->body];
     vrBodyState *st = vrUpdate_Body(up, x, ev->t);
     int i, k = 0;
     if (!st) return -1;
     if (ev->kind == VR_EV_SUPPORT_BEGIN) {
-        vrPose py;
-        vec3 uy;
-        vrBody_Pose(y, ev->t, &py);
-        uy = vrBody_PointVelocity(y, ev->t, &py, ev->c);
-        /* what is left of the normal relative velocity goes (SPEC 3.1) */
-        st->v = vec3_madd(st->v, -vec3_dot(ev->n, vec3_sub(st->v, uy)), ev->n);
+        settle_on_support(o, ev, st);
         st->support[st->nsupport].partner = ev->partner;
         st->support[st->nsupport].n = ev->n;
         st->support[st->nsupport].joint = 0;
