@@ -92,6 +92,10 @@ int vrContact_Region(const vrShape *a, const vrPose *pa, const vrShape *b, const
  * touch: use vrContact_Distance then. */
 int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
                     vrWalkCache *cache, double *dist, vec3 *n);
+/* How far from a threshold the walk's distance may decide: over a thousand
+ * times the largest difference from vrContact_Distance the tests find
+ * (6e-15 m, objects up to 20 m from the origin; they fail above 1e-13). */
+#define VR_QUICK_TOL 1e-11
 
 /* The posed shape's point farthest along dir (non-zero): a sphere's surface
  * point, a polyhedron's vertex (the first of equals; O(vertices)).  libccd's

@@ -18,7 +18,6 @@
 #define BISECTIONS 48
 #define TIE_SPEED 1e-9        /* m/s: points this close to the most approaching one share the impulse */
 #define CONTAIN_TOL 1e-9      /* m: support containment in the contact plane */
-#define QUICK_TOL 1e-8        /* m: the walk's distance decides only this far from d */
 
 typedef struct vrPair {
     int a, b;                 /* object ids, a < b */
@@ -579,7 +578,7 @@ static int within_d(vrOwner *o, vrPair *p, double t)
     vrBody_Pose(A, t, &pa);
     vrBody_Pose(B, t, &pb);
     if (vrContact_Quick(&A->shape, &pa, &B->shape, &pb, &p->cache, &dist, &n) == 0
-        && fabs(dist - o->p.d) > QUICK_TOL) {
+        && fabs(dist - o->p.d) > VR_QUICK_TOL) {
         o->checks++;
         return dist < o->p.d;     /* clear either way: the canonical answer too */
     }
@@ -765,7 +764,7 @@ static int cheap_look_allowed(const vrOwner *o, const vrPair *p)
 }
 
 /* the walk's distance when it is clear of the envelope: outside, no event,
- * and a key from that distance (QUICK_TOL below it) */
+ * and a key from that distance (VR_QUICK_TOL below it) */
 static int clear_by_walk(vrOwner *o, int pi, double t)
 {
     vrPair *p = &o->pair[pi];
@@ -778,9 +777,9 @@ static int clear_by_walk(vrOwner *o, int pi, double t)
     vrBody_Pose(B, t, &pb);
     if (vrContact_Quick(&A->shape, &pa, &B->shape, &pb, &p->cache, &dist, &n) != 0) return 0;
     o->checks++;
-    if (dist <= o->p.d + QUICK_TOL) return 0;
+    if (dist <= o->p.d + VR_QUICK_TOL) return 0;
     p->t_check = t;
-    settle(o, pi, 0, vrSchedule_Key(A, B, t, dist - QUICK_TOL, n, o->p.d, &o->p.flight));
+    settle(o, pi, 0, vrSchedule_Key(A, B, t, dist - VR_QUICK_TOL, n, o->p.d, &o->p.flight));
     return 1;
 }
 

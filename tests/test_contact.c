@@ -187,6 +187,48 @@ static int test_distance_is_brute_force_distance_and_independent_of_cache(void)
     return 0;
 }
 
+/* The walk's own distance (vrContact_Quick, which the scheduler and the
+ * bisection use away from d) differs from the canonical one by rounding
+ * only, from any start cache, near contact and far from the origin: the
+ * scheduler trusts it VR_QUICK_TOL from a threshold, a hundred times more. */
+static int test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance(void)
+{
+    Fix f[5];
+    int i, j, k, n = 0;
+    double worst = 0;
+    ENSURE(box(&f[0], 0.25, 0.25, 0.25) == 0 && box(&f[1], 0.4, 0.15, 0.05) == 0);
+    ENSURE(poly(&f[2], 0) == 0 && poly(&f[3], 1) == 0 && poly(&f[4], 2) == 0);
+    for (i = 0; i < 5; i++)
+        for (j = i; j < 5; j++) {
+            vrWalkCache warm;
+            memset(&warm, 0, sizeof warm);
+            warm.valid = 0;
+            for (k = 0; k < 600; k++) {
+                const vrShape *a = &f[i].s, *b = &f[j].s;
+                vec3 at = vec3_scale(rnd_unit(), rnd(0, 20)), dir = rnd_unit(), nq;
+                vrPose pa = vrPose_make(at, rnd_rotation()), pb;
+                vrWalkCache rc = start_cache(a, b, 1), cc = start_cache(a, b, 0);
+                vrContact c;
+                double gap = k % 2 ? rnd(1e-5, 0.02) : rnd(0.02, 0.5), dq;
+                pb = vrPose_make(vec3_madd(at, outer(a) + outer(b) + 0.1, dir), rnd_rotation());
+                ENSURE(vrContact_Distance(a, &pa, b, &pb, &cc, &c) == 0);
+                pb = vrPose_make(vec3_madd(pb.p, gap - c.dist, c.n), pb.q);    /* slide to the gap */
+                ENSURE(vrContact_Distance(a, &pa, b, &pb, &cc, &c) == 0);
+                if (!(c.dist > 1e-6)) continue;
+                ENSURE(vrContact_Quick(a, &pa, b, &pb, &rc, &dq, &nq) == 0);
+                worst = fmax(worst, fabs(dq - c.dist));
+                ENSURE(vrContact_Quick(a, &pa, b, &pb, &warm, &dq, &nq) == 0);
+                worst = fmax(worst, fabs(dq - c.dist));
+                n++;
+            }
+        }
+    printf("    %d pairs near and far, two caches each: largest difference %.3g m\n", n, worst);
+    for (i = 0; i < 5; i++) unfix(&f[i]);
+    ENSURE(n >= 5000);
+    ENSURE(worst <= VR_QUICK_TOL / 100);
+    return 0;
+}
+
 /* Parallel faces, stacked cubes, parallel and crossed edges, a pole over a
  * face: Region gives the same bits from every start pair of features. */
 static int test_region_is_bit_identical_from_every_start_cache(void)
@@ -592,6 +634,7 @@ int main(int argc, char **argv)
 {
     test_init(argc, argv);
     RUN_TEST(test_distance_is_brute_force_distance_and_independent_of_cache);
+    RUN_TEST(test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance);
     RUN_TEST(test_region_is_bit_identical_from_every_start_cache);
     RUN_TEST(test_region_box_flat_on_table_is_its_four_bottom_corners);
     RUN_TEST(test_region_overhanging_box_is_clipped_to_the_table);
