@@ -518,11 +518,33 @@ void vrOwner_Advance(vrOwner *o, double t)
 
 /* ---- evaluation -------------------------------------------------------------- */
 
+static int is_sphere(const vrBody *b) { return b->shape.kind == VR_SHAPE_SPHERE; }
+
+/* A sphere collides as a true sphere: a distance or a region needs only its
+ * centre, so its turning is not computed for them (the identity stands in).
+ * What needs a sphere's spin (approach speeds, responses) takes real_poses. */
+static void shape_pose(vrBody *b, double t, vrPose *pose)
+{
+    if (!is_sphere(b)) {
+        vrBody_Pose(b, t, pose);
+        return;
+    }
+    vrBody_Position(b, t, &pose->p);
+    pose->q = quat_identity();
+    pose->R = mat33_identity();
+}
+
+static void real_poses(vrOwner *o, const vrPair *p, double t, vrPose *pa, vrPose *pb)
+{
+    if (is_sphere(o->body[p->a])) vrBody_Pose(o->body[p->a], t, pa);
+    if (is_sphere(o->body[p->b])) vrBody_Pose(o->body[p->b], t, pb);
+}
+
 static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPose *pb, vrContact *c)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
-    vrBody_Pose(A, t, pa);
-    vrBody_Pose(B, t, pb);
+    shape_pose(A, t, pa);
+    shape_pose(B, t, pb);
     o->checks++;
     if (region) vrContact_Region(&A->shape, pa, &B->shape, pb, o->p.d, &p->cache, c);
     else vrContact_Distance(&A->shape, pa, &B->shape, pb, &p->cache, c);
@@ -563,6 +585,7 @@ static void flush_normal(const vrOwner *o, const vrPair *p, const vrPose *pa, co
 static void event_query(vrOwner *o, vrPair *p, double t, vrPose *pa, vrPose *pb, vrContact *c)
 {
     query(o, p, t, 1, pa, pb, c);
+    real_poses(o, p, t, pa, pb);
     flush_normal(o, p, pa, pb, c);
 }
 
@@ -575,6 +598,10 @@ static int within_d(vrOwner *o, vrPair *p, double t)
     vrContact c;
     double dist;
     vec3 n;
+    if (is_sphere(A) || is_sphere(B)) {      /* closed forms: no walk to try first */
+        query(o, p, t, 0, &pa, &pb, &c);
+        return c.dist <= o->p.d;
+    }
     vrBody_Pose(A, t, &pa);
     vrBody_Pose(B, t, &pb);
     if (vrContact_Quick(&A->shape, &pa, &B->shape, &pb, &p->cache, &dist, &n) == 0
@@ -772,7 +799,7 @@ static int clear_by_walk(vrOwner *o, int pi, double t)
     vrPose pa, pb;
     double dist;
     vec3 n;
-    if (!cheap_look_allowed(o, p)) return 0;
+    if (!cheap_look_allowed(o, p) || is_sphere(A) || is_sphere(B)) return 0;
     vrBody_Pose(A, t, &pa);
     vrBody_Pose(B, t, &pb);
     if (vrContact_Quick(&A->shape, &pa, &B->shape, &pb, &p->cache, &dist, &n) != 0) return 0;
@@ -830,7 +857,8 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
         return 1;
     }
     settle(o, pi, 1, t);
-    flush_normal(o, p, &pa, &pb, &c);    /* what event_query adds */
+    real_poses(o, p, t, &pa, &pb);       /* what event_query adds */
+    flush_normal(o, p, &pa, &pb, &c);
     return inside_events(o, ev, t, p, &pa, &pb, &c);
 }
 
