@@ -43,7 +43,11 @@ typedef struct vrBox { vec3 lo, hi; int valid; long long frame; } vrBox;   /* ma
 
 /* per pair, in a byte array an event can sweep without touching the pairs
  * themselves (a thousand bodies make half a million pairs) */
-enum { HOT_DORMANT = 1, HOT_INSIDE = 2, HOT_LISTED = 4 /* in the dormant list */ };
+enum { HOT_DORMANT = 1, HOT_INSIDE = 2 };
+
+/* pair index by the pair's order: open addressing, so that a new frame can
+ * go from two overlapping boxes to their pair */
+typedef struct vrPairMap { long long *key; int *val; int cap, n; } vrPairMap;
 
 /* what an evaluation changed, so Advance can take it back */
 typedef struct vrUndo {
@@ -65,7 +69,9 @@ struct vrOwner {
     vrBox *box;               /* by id */
     unsigned char *was_frozen; /* by id: frozen when its pairs were last scheduled (2: not yet) */
     unsigned char *hot;       /* by pair: HOT_* */
-    vrIntList dormant;        /* pairs made dormant this frame (some may have woken since) */
+    vrPairMap map;
+    int *sweep;               /* scratch: body ids in the order of their boxes' lower x */
+    int sweepcap;
     long long frame;          /* counts frames, for the boxes */
     int hotcap;
     int bodycap, nheld;
@@ -149,7 +155,9 @@ void vrOwner_Free(vrOwner *o)
     free(o->box);
     free(o->was_frozen);
     free(o->hot);
-    free(o->dormant.v);
+    free(o->map.key);
+    free(o->map.val);
+    free(o->sweep);
     free(o->body);
     free(o->pair);
     vrHeap_Free(&o->heap);
@@ -161,6 +169,55 @@ void vrOwner_Free(vrOwner *o)
     free(o->found);
     vrResponder_Free(o->responder);
     free(o);
+}
+
+static unsigned map_slot(const vrPairMap *m, long long key)
+{
+    unsigned long long h = (unsigned long long)key * 0x9E3779B97F4A7C15ull;
+    return (unsigned)(h >> 32) & (unsigned)(m->cap - 1);
+}
+
+static int map_find(const vrPairMap *m, long long key)
+{
+    unsigned i;
+    if (!m->cap) return -1;
+    for (i = map_slot(m, key); m->key[i] != -1; i = (i + 1) & (unsigned)(m->cap - 1))
+        if (m->key[i] == key) return m->val[i];
+    return -1;
+}
+
+static void map_put(vrPairMap *m, long long key, int val)
+{
+    unsigned i = map_slot(m, key);
+    while (m->key[i] != -1 && m->key[i] != key) i = (i + 1) & (unsigned)(m->cap - 1);
+    if (m->key[i] == -1) m->n++;
+    m->key[i] = key;
+    m->val[i] = val;
+}
+
+/* an empty map for at least n pairs, kept at most half full */
+static int map_reset(vrPairMap *m, int n)
+{
+    int cap = 16, i;
+    while (cap < 2 * n + 2) cap *= 2;
+    if (cap != m->cap) {
+        long long *k = malloc((size_t)cap * sizeof *k);
+        int *v = malloc((size_t)cap * sizeof *v);
+        if (!k || !v) {      /* no map: new frames wake every dormant pair */
+            free(k);
+            free(v);
+            free(m->key);
+            free(m->val);
+            memset(m, 0, sizeof *m);
+            return -1;
+        }
+        free(m->key);
+        free(m->val);
+        m->key = k, m->val = v, m->cap = cap;
+    }
+    for (i = 0; i < cap; i++) m->key[i] = -1;
+    m->n = 0;
+    return 0;
 }
 
 static int frozen(const vrBody *b) { return b->is_static || b->resting; }
@@ -278,6 +335,12 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
     p->active = -1;
     if (grow((void **)&o->hot, &o->hotcap, o->npair + 1, sizeof *o->hot) != 0) return -1;
     o->hot[o->npair] = 0;
+    if (2 * (o->map.n + 1) + 2 > o->map.cap) {
+        int i;
+        if (map_reset(&o->map, 2 * (o->npair + 1)) != 0) return -1;
+        for (i = 0; i < o->npair; i++) map_put(&o->map, o->pair[i].order, i);
+    }
+    map_put(&o->map, p->order, o->npair);
     if (list_push(&o->body_pairs[a], o->npair) != 0 || list_push(&o->body_pairs[b], o->npair) != 0
         || list_push(&o->body_partners[a], b) != 0 || list_push(&o->body_partners[b], a) != 0) return -1;
     o->npair++;
@@ -308,7 +371,7 @@ static void reindex(vrOwner *o)
     vrHeap_Init(&o->heap);
     o->active.n = 0;
     o->flagged.n = 0;
-    o->dormant.n = 0;
+    map_reset(&o->map, o->npair);   /* no memory: no map, see new_frame */
     for (i = 0; i < o->bodycap; i++) o->body_pairs[i].n = o->body_partners[i].n = 0;
     for (i = 0; i < o->npair; i++) {
         vrPair *p = &o->pair[i];
@@ -316,7 +379,8 @@ static void reindex(vrOwner *o)
         list_push(&o->body_pairs[p->b], i);
         list_push(&o->body_partners[p->a], p->b);
         list_push(&o->body_partners[p->b], p->a);
-        o->hot[i] = p->inside ? HOT_INSIDE : 0;   /* the dormant list is emptied below */
+        o->hot[i] = p->inside ? HOT_INSIDE : 0;
+        if (o->map.cap) map_put(&o->map, p->order, i);
         p->flagged = 0;
         p->active = -1;
         flag(o, i);
@@ -418,33 +482,60 @@ static int apart(vrOwner *o, int pi, int x, int y)
 
 static int pair_apart(vrOwner *o, int pi) { return apart(o, pi, o->pair[pi].a, o->pair[pi].b); }
 
-static void make_dormant(vrOwner *o, int pi)
+static void make_dormant(vrOwner *o, int pi) { o->hot[pi] |= HOT_DORMANT; }
+
+static void wake(vrOwner *o, int pi)
 {
-    if (!(o->hot[pi] & HOT_LISTED) && list_push(&o->dormant, pi) != 0) {
-        flag(o, pi);    /* no memory for the list: evaluated instead */
-        return;
-    }
-    o->hot[pi] |= HOT_DORMANT | HOT_LISTED;
+    if (!(o->hot[pi] & HOT_DORMANT)) return;
+    o->hot[pi] &= (unsigned char)~HOT_DORMANT;
+    flag(o, pi);
 }
 
-/* A new frame: new boxes (as they are needed), and the dormant pairs that
- * could meet in it are evaluated at its start. */
+static void wake_pairs_of(vrOwner *o, int id)
+{
+    int i;
+    for (i = 0; i < o->body_pairs[id].n; i++) wake(o, o->body_pairs[id].v[i]);
+}
+
+static const vrOwner *sweep_owner; /* qsort has no context argument in C99 */
+static int cmp_lower_x(const void *x, const void *y)
+{
+    int a = *(const int *)x, b = *(const int *)y;
+    double la = sweep_owner->box[a].lo.x, lb = sweep_owner->box[b].lo.x;
+    return la < lb ? -1 : la > lb ? 1 : a - b;
+}
+
+/* A new frame: new boxes, and the dormant pairs whose boxes now overlap are
+ * woken, to be evaluated at its start.  The overlaps come from sorting the
+ * boxes along x and sweeping, so the pairs that stay apart (nearly all of
+ * them among a thousand bodies) are not looked at. */
 static void new_frame(vrOwner *o, const vrGrid *g)
 {
-    int i, k = 0;
+    int i, j, n = 0;
     o->frame++;
     o->span_start = g->t0;
     o->span_end = g->T;
-    for (i = 0; i < o->dormant.n; i++) {
-        int pi = o->dormant.v[i];
-        if ((o->hot[pi] & HOT_DORMANT) && pair_apart(o, pi)) {
-            o->dormant.v[k++] = pi;
-            continue;
-        }
-        if (o->hot[pi] & HOT_DORMANT) flag(o, pi);
-        o->hot[pi] &= (unsigned char)~(HOT_DORMANT | HOT_LISTED);
+    if (!o->map.cap || grow((void **)&o->sweep, &o->sweepcap, o->bodycap, sizeof *o->sweep) != 0) {
+        for (i = 0; i < o->npair; i++) wake(o, i);
+        return;
     }
-    o->dormant.n = k;
+    for (i = 0; i < o->bodycap; i++) {
+        if (!o->body[i]) continue;
+        if (box_of(o, i)->valid) o->sweep[n++] = i;
+        else wake_pairs_of(o, i);
+    }
+    sweep_owner = o;
+    qsort(o->sweep, (size_t)n, sizeof *o->sweep, cmp_lower_x);
+    for (i = 0; i < n; i++) {
+        const vrBox *a = &o->box[o->sweep[i]];
+        for (j = i + 1; j < n && o->box[o->sweep[j]].lo.x <= a->hi.x; j++) {
+            const vrBox *b = &o->box[o->sweep[j]];
+            int x = o->sweep[i], y = o->sweep[j], pi;
+            if (a->hi.y < b->lo.y || b->hi.y < a->lo.y || a->hi.z < b->lo.z || b->hi.z < a->lo.z) continue;
+            pi = map_find(&o->map, x < y ? ((long long)x << 32) | y : ((long long)y << 32) | x);
+            if (pi >= 0) wake(o, pi);
+        }
+    }
 }
 
 void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
@@ -484,7 +575,7 @@ void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
 /* a pair's status and key after an evaluation, and where it waits */
 static void settle(vrOwner *o, int pi, int inside, double key)
 {
-    o->hot[pi] = (unsigned char)((o->hot[pi] & HOT_LISTED) | (inside ? HOT_INSIDE : 0));
+    o->hot[pi] = (unsigned char)(inside ? HOT_INSIDE : 0);
     o->pair[pi].inside = inside;
     o->pair[pi].key = key;
     place(o, pi);
