@@ -70,8 +70,9 @@ struct vrOwner {
     unsigned char *was_frozen; /* by id: frozen when its pairs were last scheduled (2: not yet) */
     unsigned char *hot;       /* by pair: HOT_* */
     vrPairMap map;
-    int *sweep;               /* scratch: body ids in the order of their boxes' lower x */
-    int sweepcap;
+    int *sweep;               /* the held bodies by their boxes' lower x, as of the last frame */
+    int nsweep, sweepcap;
+    int sweep_stale;          /* bodies came or went: the list is made anew */
     long long frame;          /* counts frames, for the boxes */
     int hotcap;
     int bodycap, nheld;
@@ -134,6 +135,7 @@ vrOwner *vrOwner_Create(void)
     o->responder = vrResponder_Create();
     o->pending_t = -INFINITY;
     o->span_start = o->span_end = NAN;   /* no frame yet: no boxes */
+    o->sweep_stale = 1;
     o->p.use_heap = 1;
     if (!o->responder) {
         vrOwner_Free(o);
@@ -306,7 +308,10 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
         }
         o->bodycap = cap;
     }
-    if (!o->body[id]) o->nheld++;
+    if (!o->body[id]) {
+        o->nheld++;
+        o->sweep_stale = 1;
+    }
     o->body[id] = b;
     o->box[id].frame = -1;
     return 0;
@@ -372,6 +377,7 @@ static void reindex(vrOwner *o)
     o->active.n = 0;
     o->flagged.n = 0;
     map_reset(&o->map, o->npair);   /* no memory: no map, see new_frame */
+    o->sweep_stale = 1;
     for (i = 0; i < o->bodycap; i++) o->body_pairs[i].n = o->body_partners[i].n = 0;
     for (i = 0; i < o->npair; i++) {
         vrPair *p = &o->pair[i];
@@ -497,12 +503,22 @@ static void wake_pairs_of(vrOwner *o, int id)
     for (i = 0; i < o->body_pairs[id].n; i++) wake(o, o->body_pairs[id].v[i]);
 }
 
-static const vrOwner *sweep_owner; /* qsort has no context argument in C99 */
-static int cmp_lower_x(const void *x, const void *y)
+/* the sweep's order: lower x of the box, then id (invalid boxes first) */
+static int sweep_before(const vrOwner *o, int a, int b)
 {
-    int a = *(const int *)x, b = *(const int *)y;
-    double la = sweep_owner->box[a].lo.x, lb = sweep_owner->box[b].lo.x;
-    return la < lb ? -1 : la > lb ? 1 : a - b;
+    double ka = o->box[a].valid ? o->box[a].lo.x : -INFINITY, kb = o->box[b].valid ? o->box[b].lo.x : -INFINITY;
+    return ka < kb || (ka == kb && a < b);
+}
+
+/* insertion sort: from one frame to the next the order hardly changes */
+static void sort_sweep(vrOwner *o)
+{
+    int i, j;
+    for (i = 1; i < o->nsweep; i++) {
+        int id = o->sweep[i];
+        for (j = i; j > 0 && sweep_before(o, id, o->sweep[j - 1]); j--) o->sweep[j] = o->sweep[j - 1];
+        o->sweep[j] = id;
+    }
 }
 
 /* A new frame: new boxes, and the dormant pairs whose boxes now overlap are
@@ -511,24 +527,29 @@ static int cmp_lower_x(const void *x, const void *y)
  * them among a thousand bodies) are not looked at. */
 static void new_frame(vrOwner *o, const vrGrid *g)
 {
-    int i, j, n = 0;
+    int i, j;
     o->frame++;
     o->span_start = g->t0;
     o->span_end = g->T;
-    if (!o->map.cap || grow((void **)&o->sweep, &o->sweepcap, o->bodycap, sizeof *o->sweep) != 0) {
+    if (o->sweep_stale) {
+        o->nsweep = 0;
+        if (o->map.cap && grow((void **)&o->sweep, &o->sweepcap, o->bodycap, sizeof *o->sweep) == 0) {
+            for (i = 0; i < o->bodycap; i++)
+                if (o->body[i]) o->sweep[o->nsweep++] = i;
+            o->sweep_stale = 0;
+        }
+    }
+    if (o->sweep_stale) {                  /* no memory for the map or the list */
         for (i = 0; i < o->npair; i++) wake(o, i);
         return;
     }
-    for (i = 0; i < o->bodycap; i++) {
-        if (!o->body[i]) continue;
-        if (box_of(o, i)->valid) o->sweep[n++] = i;
-        else wake_pairs_of(o, i);
-    }
-    sweep_owner = o;
-    qsort(o->sweep, (size_t)n, sizeof *o->sweep, cmp_lower_x);
-    for (i = 0; i < n; i++) {
+    for (i = 0; i < o->nsweep; i++)
+        if (!box_of(o, o->sweep[i])->valid) wake_pairs_of(o, o->sweep[i]);
+    sort_sweep(o);
+    for (i = 0; i < o->nsweep; i++) {
         const vrBox *a = &o->box[o->sweep[i]];
-        for (j = i + 1; j < n && o->box[o->sweep[j]].lo.x <= a->hi.x; j++) {
+        if (!a->valid) continue;
+        for (j = i + 1; j < o->nsweep && o->box[o->sweep[j]].lo.x <= a->hi.x; j++) {
             const vrBox *b = &o->box[o->sweep[j]];
             int x = o->sweep[i], y = o->sweep[j], pi;
             if (a->hi.y < b->lo.y || b->hi.y < a->lo.y || a->hi.z < b->lo.z || b->hi.z < a->lo.z) continue;
