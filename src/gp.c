@@ -1221,6 +1221,7 @@ static int find_pair(const vrOwner *o, int a, int b)
 {
     const vrIntList *l = &o->body_pairs[a];
     int i;
+    if (o->map.cap) return map_find(&o->map, ((long long)a << 32) | b);
     for (i = 0; i < l->n; i++)
         if (o->pair[l->v[i]].a == a && o->pair[l->v[i]].b == b) return l->v[i];
     return -1;
@@ -1281,8 +1282,8 @@ static int solve_small(double A[3][4], int k)
  * corners that span it make every region point's normal velocity zero, so
  * a box that comes down flat keeps no rocking spin below v_eps that would
  * tip it onto an edge later (and a sphere, one point below its centre,
- * loses only its normal velocity).  The partner does not move, as a support
- * is static, resting or supported. */
+ * loses only its normal velocity).  The partner takes no impulse, as for
+ * the normal velocity before: a support is static, resting or supported. */
 static void settle_on_support(vrOwner *o, const vrEvent *ev, vrBodyState *st)
 {
     vrBody *x = o->body[ev->body], *y = o->body[ev->partner];
@@ -1299,8 +1300,7 @@ static void settle_on_support(vrOwner *o, const vrEvent *ev, vrBodyState *st)
     event_query(o, &o->pair[pi], ev->t, &pa, &pb, &c);
     if (c.npoints == 0) return;
     k = region_corners(&c, corner);
-    w = vrBody_Omega(x, &px);
-    if (x->rot != VR_ROT_NONE || vec3_len2(st->L) > 0) w = mat33_mulv(&Iinv, st->L);
+    w = mat33_mulv(&Iinv, st->L);
     for (i = 0; i < k; i++) {
         vec3 u = vec3_add(st->v, vec3_cross(w, r[i] = vec3_sub(corner[i], px.p)));
         A[i][3] = -vec3_dot(ev->n, vec3_sub(u, vrBody_PointVelocity(y, ev->t, &py, corner[i])));
