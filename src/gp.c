@@ -9,10 +9,10 @@
  * with the same operations whatever the heap mode or the owner, so the
  * outcome is the same; the heap only skips checks that cannot matter.
  */
-#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include "gp.h"
+#include "broadphase.h"
 #include "heap.h"
 
 #define BISECTIONS 48
@@ -31,23 +31,9 @@ typedef struct vrPair {
     vrWalkCache cache;
 } vrPair;
 
-/* The box a moving body's surface can reach in the rest of the frame (its
- * centre's path, padded by r_out and half the envelope).  Two moving bodies
- * whose boxes are apart cannot come within d before the frame ends: their
- * pair is dormant, so an event re-keys only the pairs of its bodies that
- * could meet (a broadphase, with heap = 1).  A static body's box is its
- * surface's bounding box, padded the same way, so a body's pairs with the
- * furniture it is nowhere near sleep as well. */
-typedef struct vrBox { vec3 lo, hi; int valid; long long frame; } vrBox;   /* made when first needed in a frame */
-#define BOX_FOR_GOOD LLONG_MAX   /* vrBox.frame of a static body's box: kept until the body or d changes */
-
 /* per pair, in a byte array an event can sweep without touching the pairs
  * themselves (a thousand bodies make half a million pairs) */
 enum { HOT_DORMANT = 1, HOT_INSIDE = 2 };
-
-/* pair index by the pair's order: open addressing, so that a new frame can
- * go from two overlapping boxes to their pair */
-typedef struct vrPairMap { long long *key; int *val; int cap, n; } vrPairMap;
 
 /* what an evaluation changed, so Advance can take it back */
 typedef struct vrUndo {
@@ -66,14 +52,10 @@ struct vrOwner {
     vrBody **body;            /* by id, NULL when not held */
     vrIntList *body_pairs;    /* by id: indices of its pairs */
     vrIntList *body_partners; /* by id: the other body of each of those pairs */
-    vrBox *box;               /* by id */
     unsigned char *was_frozen; /* by id: frozen when its pairs were last scheduled (2: not yet) */
     unsigned char *hot;       /* by pair: HOT_* */
-    vrPairMap map;
-    int *sweep;               /* the held bodies by their boxes' lower x, as of the last frame */
-    int nsweep, sweepcap;
-    int sweep_stale;          /* bodies came or went: the list is made anew */
-    long long frame;          /* counts frames, for the boxes */
+    vrBroadphase bp;          /* which pairs could meet in the rest of the frame; its t0 and T
+                                 are the span being looked through and the frame's end */
     int hotcap;
     int bodycap, nheld;
     vrPair *pair;
@@ -92,8 +74,6 @@ struct vrOwner {
     long long checks, heap_pops;
     void (*progress)(void *ctx);
     void *progress_ctx;
-    double span_start;        /* t0 of the span being looked through */
-    double span_end;          /* T of the span being looked through (the frame's end) */
 };
 
 /* ---- small containers ------------------------------------------------------ */
@@ -134,8 +114,7 @@ vrOwner *vrOwner_Create(void)
     vrHeap_Init(&o->heap);
     o->responder = vrResponder_Create();
     o->pending_t = -INFINITY;
-    o->span_start = o->span_end = NAN;   /* no frame yet: no boxes */
-    o->sweep_stale = 1;
+    vrBroad_Init(&o->bp);
     o->p.use_heap = 1;
     if (!o->responder) {
         vrOwner_Free(o);
@@ -154,12 +133,9 @@ void vrOwner_Free(vrOwner *o)
     }
     free(o->body_pairs);
     free(o->body_partners);
-    free(o->box);
     free(o->was_frozen);
     free(o->hot);
-    free(o->map.key);
-    free(o->map.val);
-    free(o->sweep);
+    vrBroad_Free(&o->bp);
     free(o->body);
     free(o->pair);
     vrHeap_Free(&o->heap);
@@ -171,55 +147,6 @@ void vrOwner_Free(vrOwner *o)
     free(o->found);
     vrResponder_Free(o->responder);
     free(o);
-}
-
-static unsigned map_slot(const vrPairMap *m, long long key)
-{
-    unsigned long long h = (unsigned long long)key * 0x9E3779B97F4A7C15ull;
-    return (unsigned)(h >> 32) & (unsigned)(m->cap - 1);
-}
-
-static int map_find(const vrPairMap *m, long long key)
-{
-    unsigned i;
-    if (!m->cap) return -1;
-    for (i = map_slot(m, key); m->key[i] != -1; i = (i + 1) & (unsigned)(m->cap - 1))
-        if (m->key[i] == key) return m->val[i];
-    return -1;
-}
-
-static void map_put(vrPairMap *m, long long key, int val)
-{
-    unsigned i = map_slot(m, key);
-    while (m->key[i] != -1 && m->key[i] != key) i = (i + 1) & (unsigned)(m->cap - 1);
-    if (m->key[i] == -1) m->n++;
-    m->key[i] = key;
-    m->val[i] = val;
-}
-
-/* an empty map for at least n pairs, kept at most half full */
-static int map_reset(vrPairMap *m, int n)
-{
-    int cap = 16, i;
-    while (cap < 2 * n + 2) cap *= 2;
-    if (cap != m->cap) {
-        long long *k = malloc((size_t)cap * sizeof *k);
-        int *v = malloc((size_t)cap * sizeof *v);
-        if (!k || !v) {      /* no map: new frames wake every dormant pair */
-            free(k);
-            free(v);
-            free(m->key);
-            free(m->val);
-            memset(m, 0, sizeof *m);
-            return -1;
-        }
-        free(m->key);
-        free(m->val);
-        m->key = k, m->val = v, m->cap = cap;
-    }
-    for (i = 0; i < cap; i++) m->key[i] = -1;
-    m->n = 0;
-    return 0;
 }
 
 static int frozen(const vrBody *b) { return b->is_static || b->resting; }
@@ -275,8 +202,7 @@ void vrOwner_SetParams(vrOwner *o, const vrParams *p)
     int i;
     o->p = *p;
     o->v_rest = sqrt(2.0 * vec3_len(p->flight.accel) * p->d);
-    o->span_end = NAN;                    /* the boxes are padded by d: made anew */
-    for (i = 0; i < o->bodycap; i++) o->box[i].frame = -1;
+    vrBroad_SetEnvelope(&o->bp, p->d);    /* the boxes are padded by d: made anew */
     for (i = 0; i < o->npair; i++) {
         place(o, i);
         flag(o, i);
@@ -292,13 +218,10 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
         if (grow((void **)&o->body_pairs, &cap, id + 1, sizeof *o->body_pairs) != 0) return -1;
         cap = old;
         if (grow((void **)&o->body_partners, &cap, id + 1, sizeof *o->body_partners) != 0) return -1;
-        cap = old;
-        if (grow((void **)&o->box, &cap, id + 1, sizeof *o->box) != 0) return -1;
+        if (vrBroad_Reserve(&o->bp, cap) != 0) return -1;
         cap = old;
         if (grow((void **)&o->was_frozen, &cap, id + 1, sizeof *o->was_frozen) != 0) return -1;
         for (i = old; i < cap; i++) {
-            o->box[i].valid = 0;
-            o->box[i].frame = -1;
             o->was_frozen[i] = 2;
             o->body[i] = NULL;
             o->body_pairs[i].n = o->body_pairs[i].cap = 0;
@@ -308,12 +231,9 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
         }
         o->bodycap = cap;
     }
-    if (!o->body[id]) {
-        o->nheld++;
-        o->sweep_stale = 1;
-    }
+    if (!o->body[id]) o->nheld++;
     o->body[id] = b;
-    o->box[id].frame = -1;
+    vrBroad_BodyChanged(&o->bp, id);
     return 0;
 }
 
@@ -340,12 +260,12 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
     p->active = -1;
     if (grow((void **)&o->hot, &o->hotcap, o->npair + 1, sizeof *o->hot) != 0) return -1;
     o->hot[o->npair] = 0;
-    if (2 * (o->map.n + 1) + 2 > o->map.cap) {
+    if (2 * (o->bp.map.n + 1) + 2 > o->bp.map.cap) {
         int i;
-        if (map_reset(&o->map, 2 * (o->npair + 1)) != 0) return -1;
-        for (i = 0; i < o->npair; i++) map_put(&o->map, o->pair[i].order, i);
+        if (vrPairMap_Reset(&o->bp.map, 2 * (o->npair + 1)) != 0) return -1;
+        for (i = 0; i < o->npair; i++) vrPairMap_Put(&o->bp.map, o->pair[i].order, i);
     }
-    map_put(&o->map, p->order, o->npair);
+    vrPairMap_Put(&o->bp.map, p->order, o->npair);
     if (list_push(&o->body_pairs[a], o->npair) != 0 || list_push(&o->body_pairs[b], o->npair) != 0
         || list_push(&o->body_partners[a], b) != 0 || list_push(&o->body_partners[b], a) != 0) return -1;
     o->npair++;
@@ -376,8 +296,7 @@ static void reindex(vrOwner *o)
     vrHeap_Init(&o->heap);
     o->active.n = 0;
     o->flagged.n = 0;
-    map_reset(&o->map, o->npair);   /* no memory: no map, see new_frame */
-    o->sweep_stale = 1;
+    vrPairMap_Reset(&o->bp.map, o->npair);   /* no memory: no map, see new_frame */
     for (i = 0; i < o->bodycap; i++) o->body_pairs[i].n = o->body_partners[i].n = 0;
     for (i = 0; i < o->npair; i++) {
         vrPair *p = &o->pair[i];
@@ -386,7 +305,7 @@ static void reindex(vrOwner *o)
         list_push(&o->body_partners[p->a], p->b);
         list_push(&o->body_partners[p->b], p->a);
         o->hot[i] = p->inside ? HOT_INSIDE : 0;
-        if (o->map.cap) map_put(&o->map, p->order, i);
+        if (o->bp.map.cap) vrPairMap_Put(&o->bp.map, p->order, i);
         p->flagged = 0;
         p->active = -1;
         flag(o, i);
@@ -404,6 +323,7 @@ void vrOwner_DropBody(vrOwner *o, int id)
     o->npair = k;
     o->body[id] = NULL;
     o->nheld--;
+    vrBroad_BodyChanged(&o->bp, id);
     o->npending = 0;
     o->nundo = 0;
     reindex(o);
@@ -417,48 +337,6 @@ static int event_involves(const vrEvent *ev, const int *ids, int n)
     return 0;
 }
 
-/* the exact bounding box of a static body's surface: its support points
- * along the six axis directions */
-static void static_extent(vrBody *b, vec3 *lo, vec3 *hi)
-{
-    const vrShape *s = &b->shape;
-    vrPose p;
-    vrBody_Pose(b, b->m.t0, &p);
-    lo->x = vrShape_Support(s, &p, vec3_make(-1, 0, 0)).x;
-    lo->y = vrShape_Support(s, &p, vec3_make(0, -1, 0)).y;
-    lo->z = vrShape_Support(s, &p, vec3_make(0, 0, -1)).z;
-    hi->x = vrShape_Support(s, &p, vec3_make(1, 0, 0)).x;
-    hi->y = vrShape_Support(s, &p, vec3_make(0, 1, 0)).y;
-    hi->z = vrShape_Support(s, &p, vec3_make(0, 0, 1)).z;
-}
-
-/* the box of body id over [its anchor or the span start, the frame's end];
- * a static body's wherever it is */
-static void update_box(vrOwner *o, int id)
-{
-    vrBody *b = o->body[id];
-    vrBox *x = &o->box[id];
-    double t1, size, pad;
-    x->valid = 0;
-    x->frame = o->frame;
-    if (!b || !(o->span_start <= o->span_end)) return;
-    if (b->is_static) {
-        static_extent(b, &x->lo, &x->hi);
-        x->frame = BOX_FOR_GOOD;
-        pad = 0.0;
-    } else {
-        t1 = fmax(b->m.t0, o->span_start);
-        if (!(t1 <= o->span_end)) return;
-        vrBody_PathBox(b, t1, o->span_end, &x->lo, &x->hi);
-        pad = b->r_out;
-    }
-    size = fmax(vec3_maxabs(x->lo), vec3_maxabs(x->hi));
-    pad += 0.5 * o->p.d + 1e-9 + 1e-12 * size;   /* far above the rounding of a position */
-    x->lo = vec3_sub(x->lo, vec3_make(pad, pad, pad));
-    x->hi = vec3_add(x->hi, vec3_make(pad, pad, pad));
-    x->valid = 1;
-}
-
 static int has_support(const vrBody *x, int partner);
 
 /* either body of the pair rests on (or slides over) the other */
@@ -467,23 +345,12 @@ static int supported_pair(const vrOwner *o, int a, int b)
     return has_support(o->body[a], b) || has_support(o->body[b], a);
 }
 
-static const vrBox *box_of(vrOwner *o, int id)
-{
-    if (o->box[id].frame != o->frame && o->box[id].frame != BOX_FOR_GOOD) update_box(o, id);
-    return &o->box[id];
-}
-
-/* pair pi of bodies x and y cannot come within d before the frame ends */
+/* pair pi of bodies x and y cannot come within d before the frame ends:
+ * it can be dormant (with heap = 1; never while inside or supporting) */
 static int apart(vrOwner *o, int pi, int x, int y)
 {
-    const vrBox *a, *b;
     if (!o->p.use_heap || (o->hot[pi] & HOT_INSIDE)) return 0;
-    a = box_of(o, x);
-    b = box_of(o, y);
-    if (!a->valid || !b->valid) return 0;
-    if (!(a->hi.x < b->lo.x || b->hi.x < a->lo.x || a->hi.y < b->lo.y || b->hi.y < a->lo.y
-          || a->hi.z < b->lo.z || b->hi.z < a->lo.z)) return 0;
-    return !supported_pair(o, x, y);
+    return vrBroad_Apart(vrBroad_Box(&o->bp, o->body, x), vrBroad_Box(&o->bp, o->body, y)) && !supported_pair(o, x, y);
 }
 
 static int pair_apart(vrOwner *o, int pi) { return apart(o, pi, o->pair[pi].a, o->pair[pi].b); }
@@ -503,67 +370,31 @@ static void wake_pairs_of(vrOwner *o, int id)
     for (i = 0; i < o->body_pairs[id].n; i++) wake(o, o->body_pairs[id].v[i]);
 }
 
-/* the sweep's order: lower x of the box, then id (invalid boxes first) */
-static int sweep_before(const vrOwner *o, int a, int b)
+static void wake_met(void *ctx, int x, int y)
 {
-    double ka = o->box[a].valid ? o->box[a].lo.x : -INFINITY, kb = o->box[b].valid ? o->box[b].lo.x : -INFINITY;
-    return ka < kb || (ka == kb && a < b);
+    vrOwner *o = ctx;
+    int pi = vrPairMap_Find(&o->bp.map, ((long long)x << 32) | y);
+    if (pi >= 0) wake(o, pi);
 }
 
-/* insertion sort: from one frame to the next the order hardly changes */
-static void sort_sweep(vrOwner *o)
-{
-    int i, j;
-    for (i = 1; i < o->nsweep; i++) {
-        int id = o->sweep[i];
-        for (j = i; j > 0 && sweep_before(o, id, o->sweep[j - 1]); j--) o->sweep[j] = o->sweep[j - 1];
-        o->sweep[j] = id;
-    }
-}
+static void wake_boxless(void *ctx, int id) { wake_pairs_of(ctx, id); }
 
 /* A new frame: new boxes, and the dormant pairs whose boxes now overlap are
- * woken, to be evaluated at its start.  The overlaps come from sorting the
- * boxes along x and sweeping, so the pairs that stay apart (nearly all of
- * them among a thousand bodies) are not looked at. */
+ * woken, to be evaluated at its start (the broadphase sweeps the boxes, so
+ * the pairs that stay apart, nearly all of them among a thousand bodies,
+ * are not looked at).  Without the map or memory, every pair wakes. */
 static void new_frame(vrOwner *o, const vrGrid *g)
 {
-    int i, j;
-    o->frame++;
-    o->span_start = g->t0;
-    o->span_end = g->T;
-    if (o->sweep_stale) {
-        o->nsweep = 0;
-        if (o->map.cap && grow((void **)&o->sweep, &o->sweepcap, o->bodycap, sizeof *o->sweep) == 0) {
-            for (i = 0; i < o->bodycap; i++)
-                if (o->body[i]) o->sweep[o->nsweep++] = i;
-            o->sweep_stale = 0;
-        }
-    }
-    if (o->sweep_stale) {                  /* no memory for the map or the list */
+    int i;
+    if (!o->bp.map.cap || vrBroad_NewFrame(&o->bp, o->body, o->bodycap, g->t0, g->T, wake_met, wake_boxless, o) != 0)
         for (i = 0; i < o->npair; i++) wake(o, i);
-        return;
-    }
-    for (i = 0; i < o->nsweep; i++)
-        if (!box_of(o, o->sweep[i])->valid) wake_pairs_of(o, o->sweep[i]);
-    sort_sweep(o);
-    for (i = 0; i < o->nsweep; i++) {
-        const vrBox *a = &o->box[o->sweep[i]];
-        if (!a->valid) continue;
-        for (j = i + 1; j < o->nsweep && o->box[o->sweep[j]].lo.x <= a->hi.x; j++) {
-            const vrBox *b = &o->box[o->sweep[j]];
-            int x = o->sweep[i], y = o->sweep[j], pi;
-            if (a->hi.y < b->lo.y || b->hi.y < a->lo.y || a->hi.z < b->lo.z || b->hi.z < a->lo.z) continue;
-            pi = map_find(&o->map, x < y ? ((long long)x << 32) | y : ((long long)y << 32) | x);
-            if (pi >= 0) wake(o, pi);
-        }
-    }
 }
 
 void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
 {
     int i, j, k = 0;
     for (i = 0; i < n; i++)
-        if (ids[i] < o->bodycap && o->body[ids[i]]) update_box(o, ids[i]);
+        if (ids[i] < o->bodycap && o->body[ids[i]]) vrBroad_Rebox(&o->bp, o->body, ids[i]);
     for (i = 0; i < n; i++) {
         int id = ids[i], now_frozen;
         const vrIntList *l, *partner;
@@ -941,7 +772,7 @@ static int clear_by_spheres(vrOwner *o, int pi, double t)
     len = vec3_len(gap);
     if (len - A->r_out - B->r_out <= o->p.d || len == 0) return 0;
     key = vrSchedule_SphereKey(A, B, t, len - A->r_out - B->r_out, vec3_scale(gap, 1.0 / len), o->p.d, &o->p.flight);
-    if (key <= o->span_end) return 0;
+    if (key <= o->bp.T) return 0;
     p->t_check = t;
     settle(o, pi, 0, key);
     return 1;
@@ -1066,8 +897,8 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     long k = 1;
     int i;
     o->nfound = 0;
-    if (!(g->T == o->span_end)) new_frame(o, g);
-    o->span_start = g->t0;
+    if (!(g->T == o->bp.T)) new_frame(o, g);
+    o->bp.t0 = g->t0;
     span_start(o, g->t0, allow_instant);
     if (o->nfound) return take_first(o, g->t0, ev);
     while (k <= g->n) {
@@ -1221,7 +1052,7 @@ static int find_pair(const vrOwner *o, int a, int b)
 {
     const vrIntList *l = &o->body_pairs[a];
     int i;
-    if (o->map.cap) return map_find(&o->map, ((long long)a << 32) | b);
+    if (o->bp.map.cap) return vrPairMap_Find(&o->bp.map, ((long long)a << 32) | b);
     for (i = 0; i < l->n; i++)
         if (o->pair[l->v[i]].a == a && o->pair[l->v[i]].b == b) return l->v[i];
     return -1;

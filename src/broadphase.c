@@ -1,0 +1,221 @@
+/* broadphase.c — boxes for the rest of a frame, sorted and swept (see
+ * broadphase.h), and the pair map. */
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+#include "broadphase.h"
+
+#define BOX_FOR_GOOD LLONG_MAX   /* vrBox.frame of a static body's box: kept until the body or d changes */
+
+void vrBroad_Init(vrBroadphase *bp)
+{
+    memset(bp, 0, sizeof *bp);
+    bp->t0 = bp->T = NAN;     /* no frame yet: no boxes */
+    bp->stale = 1;
+}
+
+void vrBroad_Free(vrBroadphase *bp)
+{
+    free(bp->box);
+    free(bp->sweep);
+    vrPairMap_Free(&bp->map);
+    vrBroad_Init(bp);
+}
+
+int vrBroad_Reserve(vrBroadphase *bp, int n)
+{
+    vrBox *b;
+    int i;
+    if (n <= bp->cap) return 0;
+    b = realloc(bp->box, (size_t)n * sizeof *b);
+    if (!b) return -1;
+    for (i = bp->cap; i < n; i++) {
+        b[i].valid = 0;
+        b[i].frame = -1;
+    }
+    bp->box = b;
+    bp->cap = n;
+    return 0;
+}
+
+void vrBroad_BodyChanged(vrBroadphase *bp, int id)
+{
+    if (id < bp->cap) bp->box[id].frame = -1;
+    bp->stale = 1;
+}
+
+void vrBroad_SetEnvelope(vrBroadphase *bp, double d)
+{
+    int i;
+    bp->d = d;
+    bp->T = NAN;
+    for (i = 0; i < bp->cap; i++) bp->box[i].frame = -1;
+}
+
+/* the exact bounding box of a static body's surface: its support points
+ * along the six axis directions */
+static void static_extent(vrBody *b, vec3 *lo, vec3 *hi)
+{
+    const vrShape *s = &b->shape;
+    vrPose p;
+    vrBody_Pose(b, b->m.t0, &p);
+    lo->x = vrShape_Support(s, &p, vec3_make(-1, 0, 0)).x;
+    lo->y = vrShape_Support(s, &p, vec3_make(0, -1, 0)).y;
+    lo->z = vrShape_Support(s, &p, vec3_make(0, 0, -1)).z;
+    hi->x = vrShape_Support(s, &p, vec3_make(1, 0, 0)).x;
+    hi->y = vrShape_Support(s, &p, vec3_make(0, 1, 0)).y;
+    hi->z = vrShape_Support(s, &p, vec3_make(0, 0, 1)).z;
+}
+
+/* a moving body's box over [its anchor or the span start, the frame's end];
+ * a static body's wherever it is */
+void vrBroad_Rebox(vrBroadphase *bp, vrBody *const *body, int id)
+{
+    vrBody *b = body[id];
+    vrBox *x = &bp->box[id];
+    double t1, size, pad;
+    x->valid = 0;
+    x->frame = bp->frame;
+    if (!b || !(bp->t0 <= bp->T)) return;
+    if (b->is_static) {
+        static_extent(b, &x->lo, &x->hi);
+        x->frame = BOX_FOR_GOOD;
+        pad = 0.0;
+    } else {
+        t1 = fmax(b->m.t0, bp->t0);
+        if (!(t1 <= bp->T)) return;
+        vrBody_PathBox(b, t1, bp->T, &x->lo, &x->hi);
+        pad = b->r_out;
+    }
+    size = fmax(vec3_maxabs(x->lo), vec3_maxabs(x->hi));
+    pad += 0.5 * bp->d + 1e-9 + 1e-12 * size;   /* far above the rounding of a position */
+    x->lo = vec3_sub(x->lo, vec3_make(pad, pad, pad));
+    x->hi = vec3_add(x->hi, vec3_make(pad, pad, pad));
+    x->valid = 1;
+}
+
+const vrBox *vrBroad_Box(vrBroadphase *bp, vrBody *const *body, int id)
+{
+    vrBox *x = &bp->box[id];
+    if (x->frame != bp->frame && x->frame != BOX_FOR_GOOD) vrBroad_Rebox(bp, body, id);
+    return x;
+}
+
+int vrBroad_Apart(const vrBox *a, const vrBox *b)
+{
+    return a->valid && b->valid
+        && (a->hi.x < b->lo.x || b->hi.x < a->lo.x || a->hi.y < b->lo.y || b->hi.y < a->lo.y
+            || a->hi.z < b->lo.z || b->hi.z < a->lo.z);
+}
+
+/* the sweep's order: lower x of the box, then id (invalid boxes first) */
+static int sweep_before(const vrBroadphase *bp, int a, int b)
+{
+    double ka = bp->box[a].valid ? bp->box[a].lo.x : -INFINITY, kb = bp->box[b].valid ? bp->box[b].lo.x : -INFINITY;
+    return ka < kb || (ka == kb && a < b);
+}
+
+/* insertion sort: from one frame to the next the order hardly changes */
+static void sort_sweep(vrBroadphase *bp)
+{
+    int i, j;
+    for (i = 1; i < bp->nsweep; i++) {
+        int id = bp->sweep[i];
+        for (j = i; j > 0 && sweep_before(bp, id, bp->sweep[j - 1]); j--) bp->sweep[j] = bp->sweep[j - 1];
+        bp->sweep[j] = id;
+    }
+}
+
+static int remake_sweep(vrBroadphase *bp, vrBody *const *body, int nbody)
+{
+    int i, cap = bp->sweepcap;
+    if (nbody > cap) {
+        int *s = realloc(bp->sweep, (size_t)nbody * sizeof *s);
+        if (!s) return -1;
+        bp->sweep = s;
+        bp->sweepcap = nbody;
+    }
+    bp->nsweep = 0;
+    for (i = 0; i < nbody; i++)
+        if (body[i]) bp->sweep[bp->nsweep++] = i;
+    bp->stale = 0;
+    return 0;
+}
+
+int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0, double T,
+                     void (*meet)(void *ctx, int x, int y), void (*boxless)(void *ctx, int id), void *ctx)
+{
+    int i, j;
+    bp->frame++;
+    bp->t0 = t0;
+    bp->T = T;
+    if (bp->stale && remake_sweep(bp, body, nbody) != 0) return -1;
+    for (i = 0; i < bp->nsweep; i++)
+        if (!vrBroad_Box(bp, body, bp->sweep[i])->valid) boxless(ctx, bp->sweep[i]);
+    sort_sweep(bp);
+    for (i = 0; i < bp->nsweep; i++) {
+        const vrBox *a = &bp->box[bp->sweep[i]];
+        if (!a->valid) continue;
+        for (j = i + 1; j < bp->nsweep && bp->box[bp->sweep[j]].lo.x <= a->hi.x; j++) {
+            const vrBox *b = &bp->box[bp->sweep[j]];
+            int x = bp->sweep[i], y = bp->sweep[j];
+            if (a->hi.y < b->lo.y || b->hi.y < a->lo.y || a->hi.z < b->lo.z || b->hi.z < a->lo.z) continue;
+            meet(ctx, x < y ? x : y, x < y ? y : x);
+        }
+    }
+    return 0;
+}
+
+/* ---- the pair map ------------------------------------------------------------ */
+
+static unsigned map_slot(const vrPairMap *m, long long key)
+{
+    unsigned long long h = (unsigned long long)key * 0x9E3779B97F4A7C15ull;
+    return (unsigned)(h >> 32) & (unsigned)(m->cap - 1);
+}
+
+int vrPairMap_Find(const vrPairMap *m, long long key)
+{
+    unsigned i;
+    if (!m->cap) return -1;
+    for (i = map_slot(m, key); m->key[i] != -1; i = (i + 1) & (unsigned)(m->cap - 1))
+        if (m->key[i] == key) return m->val[i];
+    return -1;
+}
+
+void vrPairMap_Put(vrPairMap *m, long long key, int val)
+{
+    unsigned i = map_slot(m, key);
+    while (m->key[i] != -1 && m->key[i] != key) i = (i + 1) & (unsigned)(m->cap - 1);
+    if (m->key[i] == -1) m->n++;
+    m->key[i] = key;
+    m->val[i] = val;
+}
+
+void vrPairMap_Free(vrPairMap *m)
+{
+    free(m->key);
+    free(m->val);
+    memset(m, 0, sizeof *m);
+}
+
+/* kept at most half full */
+int vrPairMap_Reset(vrPairMap *m, int n)
+{
+    int cap = 16, i;
+    while (cap < 2 * n + 2) cap *= 2;
+    if (cap != m->cap) {
+        long long *k = malloc((size_t)cap * sizeof *k);
+        int *v = malloc((size_t)cap * sizeof *v);
+        vrPairMap_Free(m);
+        if (!k || !v) {
+            free(k);
+            free(v);
+            return -1;
+        }
+        m->key = k, m->val = v, m->cap = cap;
+    }
+    for (i = 0; i < cap; i++) m->key[i] = -1;
+    m->n = 0;
+    return 0;
+}

@@ -1,0 +1,64 @@
+/* broadphase.h — which bodies could meet in the rest of a frame, so that a
+ * pair owner (gp.c) looks only at those pairs.
+ *
+ * Each held body has a box for the rest of the current frame: a moving
+ * body's is the box its centre sweeps (exact path extremes), padded by its
+ * outer radius; a static body's is its surface's bounding box; both are
+ * padded by half the envelope d.  Two bodies whose boxes are apart cannot
+ * come within d before the frame ends.  At a frame start the boxes are
+ * sorted along x and swept, so the pairs that overlap come out without a
+ * look at the (many more) pairs that stay apart; a pair map turns two
+ * bodies into their pair.
+ */
+#ifndef VROC_BROADPHASE_H
+#define VROC_BROADPHASE_H
+
+#include "body.h"
+
+typedef struct vrBox { vec3 lo, hi; int valid; long long frame; } vrBox;
+
+/* pair index by the pair's order ((a << 32) | b): open addressing */
+typedef struct vrPairMap { long long *key; int *val; int cap, n; } vrPairMap;
+
+typedef struct vrBroadphase {
+    double t0, T, d;          /* the span looked through, the frame's end, the envelope */
+    long long frame;          /* counts frames: a box is made when first needed in one */
+    vrBox *box;               /* by body id */
+    int cap;
+    int *sweep;               /* the held bodies by their boxes' lower x, as of the last frame */
+    int nsweep, sweepcap;
+    int stale;                /* bodies came or went: the sweep list is made anew */
+    vrPairMap map;
+} vrBroadphase;
+
+void vrBroad_Init(vrBroadphase *bp);
+void vrBroad_Free(vrBroadphase *bp);
+/* box slots for body ids below n */
+int vrBroad_Reserve(vrBroadphase *bp, int n);
+/* body id was placed, replaced or dropped: its box and the sweep list are
+ * made anew */
+void vrBroad_BodyChanged(vrBroadphase *bp, int id);
+/* a new envelope: every box is made anew, and none is valid until the
+ * next frame */
+void vrBroad_SetEnvelope(vrBroadphase *bp, double d);
+/* the box of body id (body[id] may be NULL: no box) */
+const vrBox *vrBroad_Box(vrBroadphase *bp, vrBody *const *body, int id);
+/* the box of body id made again now (its motion changed) */
+void vrBroad_Rebox(vrBroadphase *bp, vrBody *const *body, int id);
+/* both boxes valid and apart */
+int vrBroad_Apart(const vrBox *a, const vrBox *b);
+/* A new frame [t0, T]: new boxes, sorted and swept.  Calls meet(ctx, x, y)
+ * for every two held bodies (x < y) whose boxes overlap and boxless(ctx,
+ * id) for every held body without a valid box.  Returns -1 (and calls
+ * nothing) when out of memory: the caller must then assume every pair
+ * could meet. */
+int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0, double T,
+                     void (*meet)(void *ctx, int x, int y), void (*boxless)(void *ctx, int id), void *ctx);
+
+/* an empty map for at least n pairs (-1 and no map when out of memory) */
+int vrPairMap_Reset(vrPairMap *m, int n);
+void vrPairMap_Put(vrPairMap *m, long long key, int val);
+int vrPairMap_Find(const vrPairMap *m, long long key);   /* -1: none */
+void vrPairMap_Free(vrPairMap *m);
+
+#endif
