@@ -958,6 +958,17 @@ int vrOwner_SupportCandidates(vrOwner *o, double t, const unsigned char *want, i
 
 /* ---- start-up overlap check ---------------------------------------------------- */
 
+/* the bodies' bounding spheres about their centres are more than tol
+ * apart: they cannot overlap, and no query is needed to say so */
+static int spheres_apart(const vrOwner *o, const vrPair *p, double t, double tol)
+{
+    const vrBody *A = o->body[p->a], *B = o->body[p->b];
+    vec3 xa, xb;
+    vrBody_Position(A, t, &xa);
+    vrBody_Position(B, t, &xb);
+    return vec3_dist(xa, xb) > A->r_out + B->r_out + tol;
+}
+
 int vrOwner_Overlapping(vrOwner *o, double t, double tol, int (*out)[2], int max)
 {
     int i, n = 0;
@@ -966,7 +977,7 @@ int vrOwner_Overlapping(vrOwner *o, double t, double tol, int (*out)[2], int max
         vrPair *p = &o->pair[o->flagged.v[i]];
         vrPose pa, pb;
         vrContact c;
-        if (!p->scheduled) continue;
+        if (!p->scheduled || spheres_apart(o, p, t, tol)) continue;
         query(o, p, t, 0, &pa, &pb, &c);
         if (c.dist < -tol) {
             if (n < max) { out[n][0] = p->a; out[n][1] = p->b; }
