@@ -355,7 +355,13 @@ static int apart(vrOwner *o, int pi, int x, int y)
 
 static int pair_apart(vrOwner *o, int pi) { return apart(o, pi, o->pair[pi].a, o->pair[pi].b); }
 
-static void make_dormant(vrOwner *o, int pi) { o->hot[pi] |= HOT_DORMANT; }
+/* out of the heap too: a dormant pair's key is for nothing (the heap stays
+ * the size of the pairs that could meet) */
+static void make_dormant(vrOwner *o, int pi)
+{
+    o->hot[pi] |= HOT_DORMANT;
+    vrHeap_Remove(&o->heap, pi);
+}
 
 static void wake(vrOwner *o, int pi)
 {
