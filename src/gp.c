@@ -359,6 +359,7 @@ static int pair_apart(vrOwner *o, int pi) { return apart(o, pi, o->pair[pi].a, o
  * the size of the pairs that could meet) */
 static void make_dormant(vrOwner *o, int pi)
 {
+    if (o->hot[pi] & HOT_DORMANT) return;     /* out already: no look at the heap */
     o->hot[pi] |= HOT_DORMANT;
     vrHeap_Remove(&o->heap, pi);
 }
