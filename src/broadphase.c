@@ -101,12 +101,13 @@ const vrBox *vrBroad_Box(vrBroadphase *bp, vrBody *const *body, int id)
     return x;
 }
 
-int vrBroad_Apart(const vrBox *a, const vrBox *b)
+static int disjoint(const vrBox *a, const vrBox *b)
 {
-    return a->valid && b->valid
-        && (a->hi.x < b->lo.x || b->hi.x < a->lo.x || a->hi.y < b->lo.y || b->hi.y < a->lo.y
-            || a->hi.z < b->lo.z || b->hi.z < a->lo.z);
+    return a->hi.x < b->lo.x || b->hi.x < a->lo.x || a->hi.y < b->lo.y || b->hi.y < a->lo.y
+        || a->hi.z < b->lo.z || b->hi.z < a->lo.z;
 }
+
+int vrBroad_Apart(const vrBox *a, const vrBox *b) { return a->valid && b->valid && disjoint(a, b); }
 
 /* the sweep's order: lower x of the box, then id (invalid boxes first) */
 static int sweep_before(const vrBroadphase *bp, int a, int b)
@@ -157,10 +158,8 @@ int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0
         const vrBox *a = &bp->box[bp->sweep[i]];
         if (!a->valid) continue;
         for (j = i + 1; j < bp->nsweep && bp->box[bp->sweep[j]].lo.x <= a->hi.x; j++) {
-            const vrBox *b = &bp->box[bp->sweep[j]];
             int x = bp->sweep[i], y = bp->sweep[j];
-            if (a->hi.y < b->lo.y || b->hi.y < a->lo.y || a->hi.z < b->lo.z || b->hi.z < a->lo.z) continue;
-            meet(ctx, x < y ? x : y, x < y ? y : x);
+            if (!disjoint(a, &bp->box[y])) meet(ctx, x < y ? x : y, x < y ? y : x);
         }
     }
     return 0;

@@ -25,6 +25,8 @@ typedef struct vrEvent {
     double e;            /* restitution to use */
     double depth;        /* push-out */
     int body, partner;   /* support events: body is (no longer) supported by partner */
+    vec3 corner[3];      /* support begins: corners spanning the contact region (gp.c) */
+    int ncorner;
 } vrEvent;
 
 /* (time, pair order): the order events are taken in */

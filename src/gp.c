@@ -530,13 +530,19 @@ static void flush_normal(const vrOwner *o, const vrPair *p, const vrPose *pa, co
     }
 }
 
-/* the query that events are decided from: with the contact region, and
- * the flush-surface normal */
+/* what events are decided from, besides a query with the region: the
+ * spheres' real poses (their spin) and the flush-surface normal */
+static void for_events(vrOwner *o, const vrPair *p, double t, vrPose *pa, vrPose *pb, vrContact *c)
+{
+    real_poses(o, p, t, pa, pb);
+    flush_normal(o, p, pa, pb, c);
+}
+
+/* the query that events are decided from */
 static void event_query(vrOwner *o, vrPair *p, double t, vrPose *pa, vrPose *pb, vrContact *c)
 {
     query(o, p, t, 1, pa, pb, c);
-    real_poses(o, p, t, pa, pb);
-    flush_normal(o, p, pa, pb, c);
+    for_events(o, p, t, pa, pb, c);
 }
 
 /* the first time in (lo, hi] with distance <= d: exactly BISECTIONS halvings,
@@ -661,6 +667,31 @@ static int supports(const vrOwner *o, const vrBody *x, const vrBody *y, vec3 n_y
     return vrRegion_Contains(c->point, c->npoints, n_yx, q, CONTAIN_TOL);
 }
 
+/* Up to three corners of a contact region that span it: the first point,
+ * the one farthest from it, and the one farthest from the line of those
+ * two (a segment or a single point when the region is one). */
+#define SPAN_TOL 1e-7   /* m: thinner than this, a region is a segment (or a point) */
+static int region_corners(const vrContact *c, vec3 corner[3])
+{
+    int i, k = 1;
+    double best = SPAN_TOL;
+    vec3 e;
+    corner[0] = c->point[0];
+    for (i = 1; i < c->npoints; i++) {
+        double l = vec3_dist(c->point[i], corner[0]);
+        if (l > best) best = l, corner[1] = c->point[i], k = 2;
+    }
+    if (k < 2) return k;
+    e = vec3_normalize(vec3_sub(corner[1], corner[0]));
+    best = SPAN_TOL;
+    for (i = 1; i < c->npoints; i++) {
+        vec3 r = vec3_sub(c->point[i], corner[0]);
+        double h = vec3_len(vec3_madd(r, -vec3_dot(r, e), e));
+        if (h > best) best = h, corner[2] = c->point[i], k = 3;
+    }
+    return k;
+}
+
 static int support_event(vrEvent *ev, int kind, double t, const vrPair *p, const vrContact *c,
                          int body, int partner, vec3 n_yx, vec3 centre)
 {
@@ -669,6 +700,7 @@ static int support_event(vrEvent *ev, int kind, double t, const vrPair *p, const
     ev->partner = partner;
     ev->n = n_yx;
     ev->c = centre;
+    if (kind == VR_EV_SUPPORT_BEGIN) ev->ncorner = region_corners(c, ev->corner);   /* for settle_on_support */
     return 1;
 }
 
@@ -760,6 +792,22 @@ static int clear_by_walk(vrOwner *o, int pi, double t)
     return 1;
 }
 
+/* the gap between the bodies' bounding spheres about their centres at t (a
+ * lower bound on their distance) and the unit direction from a's centre to
+ * b's (zero when the centres meet) */
+static double sphere_gap(const vrOwner *o, const vrPair *p, double t, vec3 *dir)
+{
+    const vrBody *A = o->body[p->a], *B = o->body[p->b];
+    vec3 xa, xb, gap;
+    double len;
+    vrBody_Position(A, t, &xa);
+    vrBody_Position(B, t, &xb);
+    gap = vec3_sub(xb, xa);
+    len = vec3_len(gap);
+    *dir = len > 0 ? vec3_scale(gap, 1.0 / len) : vec3_zero();
+    return len - A->r_out - B->r_out;
+}
+
 /* A cheap look first: the bounding spheres about the centres are a lower
  * bound on the distance.  When they stay clear of the envelope past the
  * span's end, the full query could only find the pair outside with nothing
@@ -769,16 +817,12 @@ static int clear_by_walk(vrOwner *o, int pi, double t)
 static int clear_by_spheres(vrOwner *o, int pi, double t)
 {
     vrPair *p = &o->pair[pi];
-    vrBody *A = o->body[p->a], *B = o->body[p->b];
-    vec3 xa, xb, gap;
-    double len, key;
+    vec3 dir;
+    double gap, key;
     if (!cheap_look_allowed(o, p)) return 0;
-    vrBody_Position(A, t, &xa);
-    vrBody_Position(B, t, &xb);
-    gap = vec3_sub(xb, xa);
-    len = vec3_len(gap);
-    if (len - A->r_out - B->r_out <= o->p.d || len == 0) return 0;
-    key = vrSchedule_SphereKey(A, B, t, len - A->r_out - B->r_out, vec3_scale(gap, 1.0 / len), o->p.d, &o->p.flight);
+    gap = sphere_gap(o, p, t, &dir);
+    if (gap <= o->p.d || vec3_len2(dir) == 0) return 0;
+    key = vrSchedule_SphereKey(o->body[p->a], o->body[p->b], t, gap, dir, o->p.d, &o->p.flight);
     if (key <= o->bp.T) return 0;
     p->t_check = t;
     settle(o, pi, 0, key);
@@ -807,8 +851,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
         return 1;
     }
     settle(o, pi, 1, t);
-    real_poses(o, p, t, &pa, &pb);       /* what event_query adds */
-    flush_normal(o, p, &pa, &pb, &c);
+    for_events(o, p, t, &pa, &pb, &c);   /* the query above had the region: event_query's */
     return inside_events(o, ev, t, p, &pa, &pb, &c);
 }
 
@@ -965,17 +1008,6 @@ int vrOwner_SupportCandidates(vrOwner *o, double t, const unsigned char *want, i
 
 /* ---- start-up overlap check ---------------------------------------------------- */
 
-/* the bodies' bounding spheres about their centres are more than tol
- * apart: they cannot overlap, and no query is needed to say so */
-static int spheres_apart(const vrOwner *o, const vrPair *p, double t, double tol)
-{
-    const vrBody *A = o->body[p->a], *B = o->body[p->b];
-    vec3 xa, xb;
-    vrBody_Position(A, t, &xa);
-    vrBody_Position(B, t, &xb);
-    return vec3_dist(xa, xb) > A->r_out + B->r_out + tol;
-}
-
 int vrOwner_Overlapping(vrOwner *o, double t, double tol, int (*out)[2], int max)
 {
     int i, n = 0;
@@ -984,7 +1016,8 @@ int vrOwner_Overlapping(vrOwner *o, double t, double tol, int (*out)[2], int max
         vrPair *p = &o->pair[o->flagged.v[i]];
         vrPose pa, pb;
         vrContact c;
-        if (!p->scheduled || spheres_apart(o, p, t, tol)) continue;
+        vec3 dir;
+        if (!p->scheduled || sphere_gap(o, p, t, &dir) > tol) continue;   /* bounding spheres apart: no overlap */
         query(o, p, t, 0, &pa, &pb, &c);
         if (c.dist < -tol) {
             if (n < max) { out[n][0] = p->a; out[n][1] = p->b; }
@@ -1066,41 +1099,6 @@ static int respond_pushout(vrOwner *o, const vrEvent *ev, vrUpdate *up)
     return 0;
 }
 
-static int find_pair(const vrOwner *o, int a, int b)
-{
-    const vrIntList *l = &o->body_pairs[a];
-    int i;
-    if (o->bp.map.cap) return vrPairMap_Find(&o->bp.map, ((long long)a << 32) | b);
-    for (i = 0; i < l->n; i++)
-        if (o->pair[l->v[i]].a == a && o->pair[l->v[i]].b == b) return l->v[i];
-    return -1;
-}
-
-/* Up to three corners of a contact region that span it: the first point,
- * the one farthest from it, and the one farthest from the line of those
- * two (a segment or a single point when the region is one). */
-#define SPAN_TOL 1e-7   /* m: thinner than this, a region is a segment (or a point) */
-static int region_corners(const vrContact *c, vec3 corner[3])
-{
-    int i, k = 1;
-    double best = SPAN_TOL;
-    vec3 e;
-    corner[0] = c->point[0];
-    for (i = 1; i < c->npoints; i++) {
-        double l = vec3_dist(c->point[i], corner[0]);
-        if (l > best) best = l, corner[1] = c->point[i], k = 2;
-    }
-    if (k < 2) return k;
-    e = vec3_normalize(vec3_sub(corner[1], corner[0]));
-    best = SPAN_TOL;
-    for (i = 1; i < c->npoints; i++) {
-        vec3 r = vec3_sub(c->point[i], corner[0]);
-        double h = vec3_len(vec3_madd(r, -vec3_dot(r, e), e));
-        if (h > best) best = h, corner[2] = c->point[i], k = 3;
-    }
-    return k;
-}
-
 /* Gaussian elimination with partial pivoting of a k x k system (k <= 3)
  * given as rows [a b]; the solution replaces b (column 3) */
 static int solve_small(double A[3][4], int k)
@@ -1136,23 +1134,18 @@ static int solve_small(double A[3][4], int k)
 static void settle_on_support(vrOwner *o, const vrEvent *ev, vrBodyState *st)
 {
     vrBody *x = o->body[ev->body], *y = o->body[ev->partner];
-    int pi = find_pair(o, ev->a, ev->b), k, i, j;
-    vrPose pa, pb, px, py;
-    vrContact c;
-    vec3 corner[3], r[3], w;
+    int k = ev->ncorner, i, j;
+    vrPose px, py;
+    vec3 r[3], w;
     mat33 Iinv;
     double A[3][4];
     vrBody_Pose(x, ev->t, &px);
     vrBody_Pose(y, ev->t, &py);
     Iinv = vrBody_InvInertiaWorld(x, &px);
-    if (pi < 0) return;
-    event_query(o, &o->pair[pi], ev->t, &pa, &pb, &c);
-    if (c.npoints == 0) return;
-    k = region_corners(&c, corner);
     w = mat33_mulv(&Iinv, st->L);
     for (i = 0; i < k; i++) {
-        vec3 u = vec3_add(st->v, vec3_cross(w, r[i] = vec3_sub(corner[i], px.p)));
-        A[i][3] = -vec3_dot(ev->n, vec3_sub(u, vrBody_PointVelocity(y, ev->t, &py, corner[i])));
+        vec3 u = vec3_add(st->v, vec3_cross(w, r[i] = vec3_sub(ev->corner[i], px.p)));
+        A[i][3] = -vec3_dot(ev->n, vec3_sub(u, vrBody_PointVelocity(y, ev->t, &py, ev->corner[i])));
     }
     for (i = 0; i < k; i++)
         for (j = 0; j < k; j++)

@@ -594,7 +594,7 @@ static int test_settled_box_keeps_no_rocking_spin(void)
            stats(w).collisions - settled, hypot(s.angular_vel[0], s.angular_vel[1]), s.angular_vel[2]);
     ENSURE(stats(w).collisions == settled);
     ENSURE(s.state == VR_STATE_SUPPORTED);
-    ENSURE(hypot(s.angular_vel[0], s.angular_vel[1]) < 1e-3);
+    ENSURE(hypot(s.angular_vel[0], s.angular_vel[1]) < 3e-4);    /* one corner alone leaves 5e-4 */
     ENSURE_NEAR(s.linear_vel[0], 0.1, 1e-12);          /* frictionless: it slides on */
     ENSURE(s.position[2] > 0.05 + 0.07 && s.position[2] < 0.05 + 0.07 + 0.01);
     vrWorld_Destroy(w);
