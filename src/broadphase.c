@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "broadphase.h"
+#include "grow.h"
 
 #define BOX_FOR_GOOD LLONG_MAX   /* vrBox.frame of a static body's box: kept until the body or d changes */
 
@@ -24,17 +25,12 @@ void vrBroad_Free(vrBroadphase *bp)
 
 int vrBroad_Reserve(vrBroadphase *bp, int n)
 {
-    vrBox *b;
-    int i;
-    if (n <= bp->cap) return 0;
-    b = realloc(bp->box, (size_t)n * sizeof *b);
-    if (!b) return -1;
-    for (i = bp->cap; i < n; i++) {
-        b[i].valid = 0;
-        b[i].frame = -1;
+    int i, old = bp->cap;
+    if (vrGrow((void **)&bp->box, &bp->cap, n, sizeof *bp->box) != 0) return -1;
+    for (i = old; i < bp->cap; i++) {
+        bp->box[i].valid = 0;
+        bp->box[i].frame = -1;
     }
-    bp->box = b;
-    bp->cap = n;
     return 0;
 }
 
@@ -129,13 +125,8 @@ static void sort_sweep(vrBroadphase *bp)
 
 static int remake_sweep(vrBroadphase *bp, vrBody *const *body, int nbody)
 {
-    int i, cap = bp->sweepcap;
-    if (nbody > cap) {
-        int *s = realloc(bp->sweep, (size_t)nbody * sizeof *s);
-        if (!s) return -1;
-        bp->sweep = s;
-        bp->sweepcap = nbody;
-    }
+    int i;
+    if (vrGrow((void **)&bp->sweep, &bp->sweepcap, nbody, sizeof *bp->sweep) != 0) return -1;
     bp->nsweep = 0;
     for (i = 0; i < nbody; i++)
         if (body[i]) bp->sweep[bp->nsweep++] = i;

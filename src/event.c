@@ -3,6 +3,7 @@
  * the same code, so every copy of a body moves the same bits. */
 #include <stdlib.h>
 #include "event.h"
+#include "grow.h"
 
 void vrUpdate_Init(vrUpdate *u)
 {
@@ -55,13 +56,7 @@ vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t)
     int i;
     for (i = 0; i < u->n; i++)
         if (u->body[i].id == b->id) return &u->body[i];
-    if (u->n == u->cap) {
-        int cap = u->cap ? 2 * u->cap : 8;
-        vrBodyState *nb = realloc(u->body, (size_t)cap * sizeof *nb);
-        if (!nb) return NULL;
-        u->body = nb;
-        u->cap = cap;
-    }
+    if (vrGrow((void **)&u->body, &u->cap, u->n + 1, sizeof *u->body) != 0) return NULL;
     vrBody_Capture(b, t, &u->body[u->n]);
     return &u->body[u->n++];
 }
@@ -79,13 +74,7 @@ void vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f)
 
 vrCandidate *vrCandidates_Add(vrCandidates *l)
 {
-    if (l->n == l->cap) {
-        int cap = l->cap ? 2 * l->cap : 8;
-        vrCandidate *nc = realloc(l->c, (size_t)cap * sizeof *nc);
-        if (!nc) return NULL;
-        l->c = nc;
-        l->cap = cap;
-    }
+    if (vrGrow((void **)&l->c, &l->cap, l->n + 1, sizeof *l->c) != 0) return NULL;
     return &l->c[l->n++];
 }
 

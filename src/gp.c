@@ -13,6 +13,7 @@
 #include <string.h>
 #include "gp.h"
 #include "broadphase.h"
+#include "grow.h"
 #include "heap.h"
 
 #define BISECTIONS 48
@@ -78,29 +79,16 @@ struct vrOwner {
 
 /* ---- small containers ------------------------------------------------------ */
 
-static int grow(void **arr, int *cap, int need, size_t size)
-{
-    int c = *cap ? *cap : 16;
-    void *n;
-    if (need <= *cap) return 0;
-    while (c < need) c *= 2;
-    n = realloc(*arr, (size_t)c * size);
-    if (!n) return -1;
-    *arr = n;
-    *cap = c;
-    return 0;
-}
-
 static int list_push(vrIntList *l, int v)
 {
-    if (grow((void **)&l->v, &l->cap, l->n + 1, sizeof *l->v) != 0) return -1;
+    if (vrGrow((void **)&l->v, &l->cap, l->n + 1, sizeof *l->v) != 0) return -1;
     l->v[l->n++] = v;
     return 0;
 }
 
 static int push_event(vrEvent **arr, int *n, int *cap, const vrEvent *ev)
 {
-    if (grow((void **)arr, cap, *n + 1, sizeof **arr) != 0) return -1;
+    if (vrGrow((void **)arr, cap, *n + 1, sizeof **arr) != 0) return -1;
     (*arr)[(*n)++] = *ev;
     return 0;
 }
@@ -213,14 +201,14 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
 {
     if (id >= o->bodycap) {
         int old = o->bodycap, cap = old, i;
-        if (grow((void **)&o->body, &cap, id + 1, sizeof *o->body) != 0) return -1;
+        if (vrGrow((void **)&o->body, &cap, id + 1, sizeof *o->body) != 0) return -1;
         cap = old;
-        if (grow((void **)&o->body_pairs, &cap, id + 1, sizeof *o->body_pairs) != 0) return -1;
+        if (vrGrow((void **)&o->body_pairs, &cap, id + 1, sizeof *o->body_pairs) != 0) return -1;
         cap = old;
-        if (grow((void **)&o->body_partners, &cap, id + 1, sizeof *o->body_partners) != 0) return -1;
+        if (vrGrow((void **)&o->body_partners, &cap, id + 1, sizeof *o->body_partners) != 0) return -1;
         if (vrBroad_Reserve(&o->bp, cap) != 0) return -1;
         cap = old;
-        if (grow((void **)&o->was_frozen, &cap, id + 1, sizeof *o->was_frozen) != 0) return -1;
+        if (vrGrow((void **)&o->was_frozen, &cap, id + 1, sizeof *o->was_frozen) != 0) return -1;
         for (i = old; i < cap; i++) {
             o->was_frozen[i] = 2;
             o->body[i] = NULL;
@@ -249,7 +237,7 @@ static void settle(vrOwner *o, int pi, int inside, double key);
 int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
 {
     vrPair *p;
-    if (grow((void **)&o->pair, &o->paircap, o->npair + 1, sizeof *o->pair) != 0) return -1;
+    if (vrGrow((void **)&o->pair, &o->paircap, o->npair + 1, sizeof *o->pair) != 0) return -1;
     p = &o->pair[o->npair];
     memset(p, 0, sizeof *p);
     p->a = a;
@@ -258,7 +246,7 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
     p->t_check = -INFINITY;
     p->key = -INFINITY;
     p->active = -1;
-    if (grow((void **)&o->hot, &o->hotcap, o->npair + 1, sizeof *o->hot) != 0) return -1;
+    if (vrGrow((void **)&o->hot, &o->hotcap, o->npair + 1, sizeof *o->hot) != 0) return -1;
     o->hot[o->npair] = 0;
     if (2 * (o->bp.map.n + 1) + 2 > o->bp.map.cap) {
         int i;
@@ -443,7 +431,7 @@ static void settle(vrOwner *o, int pi, int inside, double key)
 static void remember(vrOwner *o, int pi, double at)
 {
     vrUndo *u;
-    if (grow((void **)&o->undo, &o->undocap, o->nundo + 1, sizeof *o->undo) != 0) return;
+    if (vrGrow((void **)&o->undo, &o->undocap, o->nundo + 1, sizeof *o->undo) != 0) return;
     u = &o->undo[o->nundo++];
     u->pair = pi;
     u->at = at;

@@ -1,6 +1,7 @@
 /* heap.c — binary min-heap with positions, so a pair's key can move in
  * O(log p) when an event changes its objects (thesis 3.3.1.2). */
 #include <stdlib.h>
+#include "grow.h"
 #include "heap.h"
 
 static int before(const vrHeapEntry *a, const vrHeapEntry *b)
@@ -56,24 +57,10 @@ void vrHeap_Free(vrHeap *h)
 
 static int reserve(vrHeap *h, int id)
 {
-    if (id >= h->idcap) {
-        int cap = h->idcap ? h->idcap : 64, i;
-        int *pos;
-        while (cap <= id) cap *= 2;
-        pos = realloc(h->pos, (size_t)cap * sizeof *pos);
-        if (!pos) return -1;
-        for (i = h->idcap; i < cap; i++) pos[i] = -1;
-        h->pos = pos;
-        h->idcap = cap;
-    }
-    if (h->n == h->cap) {
-        int cap = h->cap ? 2 * h->cap : 64;
-        vrHeapEntry *e = realloc(h->e, (size_t)cap * sizeof *e);
-        if (!e) return -1;
-        h->e = e;
-        h->cap = cap;
-    }
-    return 0;
+    int i, old = h->idcap;
+    if (vrGrow((void **)&h->pos, &h->idcap, id + 1, sizeof *h->pos) != 0) return -1;
+    for (i = old; i < h->idcap; i++) h->pos[i] = -1;
+    return vrGrow((void **)&h->e, &h->cap, h->n + 1, sizeof *h->e);
 }
 
 int vrHeap_Set(vrHeap *h, int id, double key, long long order)

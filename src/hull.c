@@ -21,6 +21,7 @@
 #include <float.h>
 #include <stdlib.h>
 #include <string.h>
+#include "grow.h"
 #include "polyhedron.h"
 
 /* ---- exact orientation ----------------------------------------------------
@@ -186,30 +187,18 @@ typedef struct Hull {
 
 static void push(Hull *h, IntVec *v, int x)
 {
-    if (v->n == v->cap) {
-        int cap = v->cap ? 2 * v->cap : 64;
-        int *a = realloc(v->a, sizeof *a * cap);
-        if (!a) {
-            h->oom = 1;
-            return;
-        }
-        v->a = a;
-        v->cap = cap;
+    if (vrGrow((void **)&v->a, &v->cap, v->n + 1, sizeof *v->a) != 0) {
+        h->oom = 1;
+        return;
     }
     v->a[v->n++] = x;
 }
 
 static void push_horizon(Hull *h, int a, int b, int out)
 {
-    if (h->nhz == h->caphz) {
-        int cap = h->caphz ? 2 * h->caphz : 64;
-        Horizon *z = realloc(h->hz, sizeof *z * cap);
-        if (!z) {
-            h->oom = 1;
-            return;
-        }
-        h->hz = z;
-        h->caphz = cap;
+    if (vrGrow((void **)&h->hz, &h->caphz, h->nhz + 1, sizeof *h->hz) != 0) {
+        h->oom = 1;
+        return;
     }
     h->hz[h->nhz].a = a;
     h->hz[h->nhz].b = b;
@@ -232,15 +221,9 @@ static int new_face(Hull *h, int a, int b, int c)
     if (h->freeface.n > 0) {
         id = h->freeface.a[--h->freeface.n];
     } else {
-        if (h->nface == h->capface) {
-            int cap = h->capface ? 2 * h->capface : 64;
-            Face *nf = realloc(h->face, sizeof *nf * cap);
-            if (!nf) {
-                h->oom = 1;
-                return -1;
-            }
-            h->face = nf;
-            h->capface = cap;
+        if (vrGrow((void **)&h->face, &h->capface, h->nface + 1, sizeof *h->face) != 0) {
+            h->oom = 1;
+            return -1;
         }
         id = h->nface++;
     }
@@ -660,13 +643,7 @@ static int on_plane(const Tris *t, const vec3 *p, const Group *g, int w, double 
 static int new_group(Tris *t, const vec3 *p, int seed)
 {
     Group *g;
-    if (t->ngroup == t->capgroup) {
-        int cap = t->capgroup ? 2 * t->capgroup : 256;
-        Group *ng = realloc(t->g, sizeof *ng * cap);
-        if (!ng) return -1;
-        t->g = ng;
-        t->capgroup = cap;
-    }
+    if (vrGrow((void **)&t->g, &t->capgroup, t->ngroup + 1, sizeof *t->g) != 0) return -1;
     g = &t->g[t->ngroup];
     g->n = vec3_normalize(tri_cross(t, p, seed));
     g->a = p[t->v[seed][0]];
@@ -709,13 +686,7 @@ typedef struct Loops { int n, len, cap, capn; int *start; int *vert; int *group;
 
 static int loops_add(Loops *l, int v)
 {
-    if (l->len == l->cap) {
-        int cap = l->cap ? 2 * l->cap : 256;
-        int *a = realloc(l->vert, sizeof *a * cap);
-        if (!a) return -1;
-        l->vert = a;
-        l->cap = cap;
-    }
+    if (vrGrow((void **)&l->vert, &l->cap, l->len + 1, sizeof *l->vert) != 0) return -1;
     l->vert[l->len++] = v;
     return 0;
 }

@@ -17,6 +17,7 @@
 #include <sys/stat.h>
 #include <stdio.h>
 #include <ctype.h>
+#include "grow.h"
 #include "polyhedron.h"
 
 #define OFF_TOL 1e-6
@@ -44,37 +45,18 @@ typedef struct Off {
     int cap[5];          /* of v, vline, fstart, fline, fvert */
 } Off;
 
-/* a, with room for need items of size sz (capacity *cap, doubled as it
- * grows); NULL when memory runs out, a then still valid */
-static void *room(void *a, int *cap, int need, size_t sz)
-{
-    int c = *cap;
-    void *b;
-    if (need <= c) return a;
-    while (c < need) c = c ? 2 * c : 64;
-    b = realloc(a, sz * c);
-    if (b) *cap = c;
-    return b;
-}
-
 /* room for vertex i and its line number */
 static int room_vertex(Off *o, int i)
 {
-    vec3 *v = room(o->v, &o->cap[0], i + 1, sizeof *o->v);
-    int *line = v ? room(o->vline, &o->cap[1], i + 1, sizeof *o->vline) : NULL;
-    if (v) o->v = v;
-    if (line) o->vline = line;
-    return v && line ? 0 : -1;
+    return vrGrow((void **)&o->v, &o->cap[0], i + 1, sizeof *o->v) != 0
+        || vrGrow((void **)&o->vline, &o->cap[1], i + 1, sizeof *o->vline) != 0 ? -1 : 0;
 }
 
 /* room for face f's start (and the end after it) and line number */
 static int room_face(Off *o, int f)
 {
-    int *start = room(o->fstart, &o->cap[2], f + 2, sizeof *o->fstart);
-    int *line = start ? room(o->fline, &o->cap[3], f + 1, sizeof *o->fline) : NULL;
-    if (start) o->fstart = start;
-    if (line) o->fline = line;
-    return start && line ? 0 : -1;
+    return vrGrow((void **)&o->fstart, &o->cap[2], f + 2, sizeof *o->fstart) != 0
+        || vrGrow((void **)&o->fline, &o->cap[3], f + 1, sizeof *o->fline) != 0 ? -1 : 0;
 }
 
 static void off_free(Off *o)
@@ -95,13 +77,7 @@ static int split(Reader *r)
     for (;;) {
         while (*s && isspace((unsigned char)*s)) s++;
         if (!*s) return 0;
-        if (r->ntok == r->captok) {
-            int cap = r->captok ? 2 * r->captok : 16;
-            char **t = realloc(r->tok, sizeof *t * cap);
-            if (!t) return -1;
-            r->tok = t;
-            r->captok = cap;
-        }
+        if (vrGrow((void **)&r->tok, &r->captok, r->ntok + 1, sizeof *r->tok) != 0) return -1;
         r->tok[r->ntok++] = s;
         while (*s && !isspace((unsigned char)*s)) s++;
         if (*s) *s++ = 0;
@@ -220,7 +196,7 @@ static int read_vertices(Reader *r, Off *o, char *err, size_t errlen)
 static int read_face(Reader *r, Off *o, int f, int *seen, char *err, size_t errlen)
 {
     char msg[200];
-    int k, j, v, *fvert;
+    int k, j, v;
     if (parse_int(r->tok[0], 3, o->nv, &k) != 0) {
         snprintf(msg, sizeof msg, "face %d: bad vertex count '%.40s' (3..%d)", f, r->tok[0], o->nv);
         return fail_at(r, err, errlen, msg);
@@ -239,9 +215,8 @@ static int read_face(Reader *r, Off *o, int f, int *seen, char *err, size_t errl
             return fail_at(r, err, errlen, msg);
         }
         seen[v] = f;
-        fvert = room(o->fvert, &o->cap[4], o->nfvert + 1, sizeof *o->fvert);
-        if (!fvert) return vrGeom_Fail(err, errlen, "out of memory");
-        o->fvert = fvert;
+        if (vrGrow((void **)&o->fvert, &o->cap[4], o->nfvert + 1, sizeof *o->fvert) != 0)
+            return vrGeom_Fail(err, errlen, "out of memory");
         o->fvert[o->nfvert++] = v;
     }
     return 0;

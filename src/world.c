@@ -11,6 +11,7 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
+#include "grow.h"
 #include "world.h"
 
 #define MAX_REPORTED_OVERLAPS 8
@@ -586,13 +587,7 @@ static int rebuild_dynamic_list(vrWorld *w)
     for (i = 0; i < w->nobj; i++) {
         vrObject *o = w->obj[i];
         if (!o || !o->live || o->body.is_static) continue;
-        if (w->ndyn == w->dyncap) {
-            int cap = w->dyncap ? 2 * w->dyncap : 64;
-            vrBody **nd = realloc(w->dyn, (size_t)cap * sizeof *nd);
-            if (!nd) return -1;
-            w->dyn = nd;
-            w->dyncap = cap;
-        }
+        if (vrGrow((void **)&w->dyn, &w->dyncap, w->ndyn + 1, sizeof *w->dyn) != 0) return -1;
         w->dyn[w->ndyn++] = &o->body;
     }
     return 0;
@@ -761,13 +756,7 @@ int vrWorld_Start(vrWorld *w, char *err, size_t n)
 
 static int note_changed(vrWorld *w, int id)
 {
-    if (w->nchanged == w->changedcap) {
-        int cap = w->changedcap ? 2 * w->changedcap : 64;
-        int *nc = realloc(w->changed, (size_t)cap * sizeof *nc);
-        if (!nc) return -1;
-        w->changed = nc;
-        w->changedcap = cap;
-    }
+    if (vrGrow((void **)&w->changed, &w->changedcap, w->nchanged + 1, sizeof *w->changed) != 0) return -1;
     w->changed[w->nchanged++] = id;
     return 0;
 }

@@ -20,6 +20,7 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
+#include "grow.h"
 #include "link.h"
 #include "wire.h"
 #include "worker.h"
@@ -451,13 +452,7 @@ static int append_states(vrUpdate *to, const vrUpdate *from)
 {
     int i;
     for (i = 0; i < from->n; i++) {
-        if (to->n == to->cap) {
-            int cap = to->cap ? 2 * to->cap : 16;
-            vrBodyState *nb = realloc(to->body, (size_t)cap * sizeof *nb);
-            if (!nb) return -1;
-            to->body = nb;
-            to->cap = cap;
-        }
+        if (vrGrow((void **)&to->body, &to->cap, to->n + 1, sizeof *to->body) != 0) return -1;
         to->body[to->n++] = from->body[i];
     }
     return 0;

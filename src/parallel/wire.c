@@ -1,6 +1,7 @@
 /* wire.c — conversions between the library's structures and LCM messages. */
 #include <stdlib.h>
 #include <string.h>
+#include "grow.h"
 #include "wire.h"
 
 static int finite_all(const double *v, int n)
@@ -93,15 +94,9 @@ int vrWire_GetStates(const vroc_body_state_t *m, int n, int max_id, vrUpdate *up
             up->n = old;
             return -1;
         }
-        if (up->n == up->cap) {
-            int cap = up->cap ? 2 * up->cap : 8;
-            vrBodyState *nb = realloc(up->body, (size_t)cap * sizeof *nb);
-            if (!nb) {
-                up->n = old;
-                return -1;
-            }
-            up->body = nb;
-            up->cap = cap;
+        if (vrGrow((void **)&up->body, &up->cap, up->n + 1, sizeof *up->body) != 0) {
+            up->n = old;
+            return -1;
         }
         up->body[up->n++] = st;
     }
