@@ -142,6 +142,19 @@ static int region_is(const vrContact *c, const vec3 *expect, int n)
 
 /* ---- canonical distance ------------------------------------------------ */
 
+/* a cube, a thin plate, a sphere mesh and two superquadrics */
+static int five_shapes(Fix f[5])
+{
+    return box(&f[0], 0.25, 0.25, 0.25) || box(&f[1], 0.4, 0.15, 0.05) || poly(&f[2], 0) || poly(&f[3], 1)
+        || poly(&f[4], 2) ? -1 : 0;
+}
+
+static void unfix_five(Fix f[5])
+{
+    int i;
+    for (i = 0; i < 5; i++) unfix(&f[i]);
+}
+
 /* vrContact_Distance equals brute force on 10,000 random separated poses of boxes
  * and polyhedra, and gives the same bits from the previous, a random and the
  * empty cache: the cache buys speed only (SPEC 3.2). */
@@ -149,8 +162,7 @@ static int test_distance_is_brute_force_distance_and_independent_of_cache(void)
 {
     Fix f[5];
     int i, j, k, n = 0;
-    ENSURE(box(&f[0], 0.25, 0.25, 0.25) == 0 && box(&f[1], 0.4, 0.15, 0.05) == 0);
-    ENSURE(poly(&f[2], 0) == 0 && poly(&f[3], 1) == 0 && poly(&f[4], 2) == 0);
+    ENSURE(five_shapes(f) == 0);
     for (i = 0; i < 5; i++)
         for (j = i; j < 5; j++) {
             vrWalkCache warm;
@@ -182,7 +194,7 @@ static int test_distance_is_brute_force_distance_and_independent_of_cache(void)
             }
         }
     printf("    %d separated pairs, 3 caches each\n", n);
-    for (i = 0; i < 5; i++) unfix(&f[i]);
+    unfix_five(f);
     ENSURE(n >= 10000);
     return 0;
 }
@@ -196,13 +208,11 @@ static int test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance(
     Fix f[5];
     int i, j, k, n = 0;
     double worst = 0;
-    ENSURE(box(&f[0], 0.25, 0.25, 0.25) == 0 && box(&f[1], 0.4, 0.15, 0.05) == 0);
-    ENSURE(poly(&f[2], 0) == 0 && poly(&f[3], 1) == 0 && poly(&f[4], 2) == 0);
+    ENSURE(five_shapes(f) == 0);
     for (i = 0; i < 5; i++)
         for (j = i; j < 5; j++) {
             vrWalkCache warm;
             memset(&warm, 0, sizeof warm);
-            warm.valid = 0;
             for (k = 0; k < 600; k++) {
                 const vrShape *a = &f[i].s, *b = &f[j].s;
                 vec3 at = vec3_scale(rnd_unit(), rnd(0, 20)), dir = rnd_unit(), nq;
@@ -223,7 +233,7 @@ static int test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance(
             }
         }
     printf("    %d pairs near and far, two caches each: largest difference %.3g m\n", n, worst);
-    for (i = 0; i < 5; i++) unfix(&f[i]);
+    unfix_five(f);
     ENSURE(n >= 5000);
     ENSURE(worst <= VR_QUICK_TOL / 100);
     return 0;

@@ -4,14 +4,8 @@
 #include "test.h"
 #include "response.h"
 
-static unsigned long long rng = 12345;
-static double uni(void)
-{
-    rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(rng >> 11) / 9007199254740992.0;
-}
-static double sym(double r) { return (2 * uni() - 1) * r; }
-static vec3 rvec(double r) { return vec3_make(sym(r), sym(r), sym(r)); }
+#define TEST_LCG_SEED 12345ULL
+#include "test_lcg.h"
 
 /* a random rigid body: mass, SPD inertia R D R^T, lever arm, velocities */
 static void random_body(vrImpactBody *b, int is_static)

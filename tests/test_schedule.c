@@ -5,14 +5,8 @@
 #include "test.h"
 #include "schedule.h"
 
-static unsigned long long rng = 777;
-static double uni(void)
-{
-    rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(rng >> 11) / 9007199254740992.0;
-}
-static double sym(double r) { return (2 * uni() - 1) * r; }
-static vec3 rvec(double r) { return vec3_make(sym(r), sym(r), sym(r)); }
+#define TEST_LCG_SEED 777ULL
+#include "test_lcg.h"
 
 static vrPolyhedron *cube_poly;
 
