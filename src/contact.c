@@ -685,19 +685,17 @@ static int penetration_contact(const vrShape *a, const vrPose *pa, const vrShape
     return 0;
 }
 
-static int poly_contact(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb, double d,
-                        vrWalkCache *cache, vrContact *out)
+/* steps 2-5 after the walk (dw, ca, cb, pen: its result, the cache at
+ * its end): the canonical features, distance and normal, and the region */
+static int poly_finish(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb, double d,
+                       vrWalkCache *cache, double dw, vec3 ca, vec3 cb, int pen, vrContact *out)
 {
     Body ba, bb;
     Canon c;
     Gap g;
-    vec3 ca, cb;
-    int pen, rc;
-    double dw;
-    ba.p = a->poly, ba.pose = pa, bb.p = b->poly, bb.pose = pb;
-    if (!ba.p || !bb.p) return -1;
-    dw = vrClosest_Walk(ba.p, pa, bb.p, pb, cache, &ca, &cb, &out->walk_steps, &pen);
+    int rc;
     if (pen || !(dw > 0)) return penetration_contact(a, pa, b, pb, d, ca, cb, out);
+    ba.p = a->poly, ba.pose = pa, bb.p = b->poly, bb.pose = pb;
     canon_init(&c);
     g.a = &ba, g.b = &bb, g.va = feature_vertex(ba.p, cache->a), g.vb = feature_vertex(bb.p, cache->b);
     rc = canonical(&ba, &bb, walk_direction(&g, cache->a, cache->b, ca, cb, dw), g.va, g.vb, &c);
@@ -711,6 +709,17 @@ static int poly_contact(const vrShape *a, const vrPose *pa, const vrShape *b, co
     }
     canon_free(&c);
     return rc;
+}
+
+static int poly_contact(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb, double d,
+                        vrWalkCache *cache, vrContact *out)
+{
+    vec3 ca, cb;
+    int pen;
+    double dw;
+    if (!a->poly || !b->poly) return -1;
+    dw = vrClosest_Walk(a->poly, pa, b->poly, pb, cache, &ca, &cb, &out->walk_steps, &pen);
+    return poly_finish(a, pa, b, pb, d, cache, dw, ca, cb, pen, out);
 }
 
 /* ---- spheres (step 6) ----------------------------------------------------- */
@@ -944,6 +953,28 @@ int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const 
     *dist = dw;
     *n = vec3_scale(vec3_sub(cb, ca), 1.0 / dw);
     return 0;
+}
+
+/* One walk: its own distance when that is clear of d, else the canonical
+ * distance finished from the same walk (a second walk from where the first
+ * ended would only confirm it). */
+int vrContact_Within(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
+                     vrWalkCache *cache, double d)
+{
+    vrContact c;
+    vec3 ca, cb;
+    int pen;
+    double dw;
+    if (a->kind == VR_SHAPE_SPHERE || b->kind == VR_SHAPE_SPHERE || !a->poly || !b->poly || !cache) {
+        contact(a, pa, b, pb, -1, cache, &c);
+        return c.dist <= d;
+    }
+    dw = vrClosest_Walk(a->poly, pa, b->poly, pb, cache, &ca, &cb, NULL, &pen);
+    if (!pen && dw > 0 && fabs(dw - d) > VR_QUICK_TOL) return dw < d;
+    c.dist = dw;
+    c.npoints = 0;
+    poly_finish(a, pa, b, pb, -1, cache, dw, ca, cb, pen, &c);
+    return c.dist <= d;
 }
 
 int vrContact_Distance(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,

@@ -97,6 +97,13 @@ int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const 
  * (6e-15 m, objects up to 20 m from the origin; they fail above 1e-13). */
 #define VR_QUICK_TOL 1e-11
 
+/* Is the distance <= d?  The walk's own distance decides when it is more
+ * than VR_QUICK_TOL from d (the canonical answer is then the same), else
+ * vrContact_Distance's, finished from the same walk: the bisection's test
+ * (SPEC 3.2), one walk a call. */
+int vrContact_Within(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
+                     vrWalkCache *cache, double d);
+
 /* The posed shape's point farthest along dir (non-zero): a sphere's surface
  * point, a polyhedron's vertex (the first of equals; O(vertices)).  libccd's
  * support function, and how far a shape reaches along a direction. */

@@ -539,22 +539,10 @@ static int within_d(vrOwner *o, vrPair *p, double t)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
     vrPose pa, pb;
-    vrContact c;
-    double dist;
-    vec3 n;
-    if (is_sphere(A) || is_sphere(B)) {      /* closed forms: no walk to try first */
-        query(o, p, t, 0, &pa, &pb, &c);
-        return c.dist <= o->p.d;
-    }
-    vrBody_Pose(A, t, &pa);
-    vrBody_Pose(B, t, &pb);
-    if (vrContact_Quick(&A->shape, &pa, &B->shape, &pb, &p->cache, &dist, &n) == 0
-        && fabs(dist - o->p.d) > VR_QUICK_TOL) {
-        o->checks++;
-        return dist < o->p.d;     /* clear either way: the canonical answer too */
-    }
-    query(o, p, t, 0, &pa, &pb, &c);
-    return c.dist <= o->p.d;
+    shape_pose(A, t, &pa);
+    shape_pose(B, t, &pb);
+    o->checks++;
+    return vrContact_Within(&A->shape, &pa, &B->shape, &pb, &p->cache, o->p.d);
 }
 
 static double bisect(vrOwner *o, vrPair *p, double lo, double hi)
