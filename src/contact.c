@@ -162,6 +162,14 @@ typedef struct Support {
     IntSet v;          /* its vertices, ascending */
 } Support;
 
+/* a vertex of the walk's feature f: where a search on the graph starts */
+static int feature_vertex(const vrPolyhedron *p, vrFeature f)
+{
+    if (f.type == VR_VERTEX) return f.index;
+    if (f.type == VR_EDGE) return p->edge_v[f.index][0];
+    return p->face_vert[p->face_start[f.index]];
+}
+
 static int edge_between(const vrPolyhedron *p, int v, int w)
 {
     int k;
@@ -206,15 +214,32 @@ static int set_to_face(const vrPolyhedron *p, int f, IntSet *s)
     return 0;
 }
 
-/* The support feature of b along world dir (Mirtich's features, found from
- * the walk's vertex `start`): 1 vertex, 2 = an edge, >= 3 = a face.  Sets
- * that are none of these (tolerance corner cases) fall back to a face inside
- * the set, or to its highest vertex. */
-static int support_feature(const Body *b, vec3 dir, int start, Support *s)
+/* Does body-frame direction d have exactly face f's vertices as its
+ * near-support set?  Yes when d is so near f's normal that, with the face's
+ * spread, they stay within SUPPORT_TOL of one another and every other vertex
+ * stays more than SUPPORT_TOL below them (rounding allowed for): then the
+ * search below would find f, so it need not run. */
+static int face_is_support(const vrPolyhedron *p, vec3 d, int f)
+{
+    double slack = 2 * (vec3_dist(d, p->face_normal[f]) + 1e-12) * p->r_out + 1e-12;
+    return p->face_spread[f] + slack < SUPPORT_TOL && p->face_drop[f] - slack > SUPPORT_TOL;
+}
+
+/* The support feature of b along world dir (Mirtich's features), searched
+ * from the walk's feature `from`: 1 vertex, 2 = an edge, >= 3 = a face.
+ * Sets that are none of these (tolerance corner cases) fall back to a face
+ * inside the set, or to its highest vertex.  When the walk ended on a face
+ * that is the support (a box on a table), it is taken at once. */
+static int support_feature(const Body *b, vec3 dir, vrFeature from, Support *s)
 {
     const vrPolyhedron *p = b->p;
     vec3 d = mat33_tmulv(&b->pose->R, dir);
-    if (support_set(b, dir, start, &s->v)) return -1;
+    if (from.type == VR_FACE && from.index >= 0 && from.index < p->nf && face_is_support(p, d, from.index)) {
+        s->kind = VR_FACE;
+        s->index = from.index;
+        return set_to_face(p, s->index, &s->v);
+    }
+    if (support_set(b, dir, feature_vertex(p, from), &s->v)) return -1;
     if (s->v.n == 2 && (s->index = edge_between(p, s->v.v[0], s->v.v[1])) >= 0) {
         s->kind = VR_EDGE;
         return 0;
@@ -340,9 +365,9 @@ static void point_features(const Body *a, const Body *b, Canon *c)
 
 /* Steps 2-4 of the rule: support features along dir (a) and -dir (b),
  * then normal and distance from them. */
-static int canonical(const Body *a, const Body *b, vec3 dir, int start_a, int start_b, Canon *c)
+static int canonical(const Body *a, const Body *b, vec3 dir, vrFeature fa, vrFeature fb, Canon *c)
 {
-    if (support_feature(a, dir, start_a, &c->sa) || support_feature(b, vec3_neg(dir), start_b, &c->sb)) return -1;
+    if (support_feature(a, dir, fa, &c->sa) || support_feature(b, vec3_neg(dir), fb, &c->sb)) return -1;
     if (c->sa.kind == VR_FACE) {
         c->n = face_plane(a, c->sa.index, &c->ha);
         c->dist = face_against(b, &c->sb.v, c->n, c->ha, &c->qa, &c->qb);
@@ -361,13 +386,6 @@ static int canonical(const Body *a, const Body *b, vec3 dir, int start_a, int st
 }
 
 /* ---- the walk's direction and starting vertices ---------------------------- */
-
-static int feature_vertex(const vrPolyhedron *p, vrFeature f)
-{
-    if (f.type == VR_VERTEX) return f.index;
-    if (f.type == VR_EDGE) return p->edge_v[f.index][0];
-    return p->face_vert[p->face_start[f.index]];
-}
 
 /* How far apart a (from vertex va) and b (from vb), or a and the point c
  * when b is NULL, are along world direction u: the gap between their
@@ -698,7 +716,7 @@ static int poly_finish(const vrShape *a, const vrPose *pa, const vrShape *b, con
     ba.p = a->poly, ba.pose = pa, bb.p = b->poly, bb.pose = pb;
     canon_init(&c);
     g.a = &ba, g.b = &bb, g.va = feature_vertex(ba.p, cache->a), g.vb = feature_vertex(bb.p, cache->b);
-    rc = canonical(&ba, &bb, walk_direction(&g, cache->a, cache->b, ca, cb, dw), g.va, g.vb, &c);
+    rc = canonical(&ba, &bb, walk_direction(&g, cache->a, cache->b, ca, cb, dw), cache->a, cache->b, &c);
     if (rc == 0 && !(c.dist > 0)) { /* the canonical features touch */
         canon_free(&c);
         return penetration_contact(a, pa, b, pb, d, ca, cb, out);
@@ -790,7 +808,7 @@ static int near_poly(const Body *b, vec3 c, vrWalkCache *cache, int *steps, Near
     g.a = b, g.b = NULL, g.c = c, g.va = feature_vertex(b->p, f), g.vb = 0;
     dir = walk_direction(&g, f, f, q, c, dw);
     set_init(&s.v);
-    if (support_feature(b, dir, feature_vertex(b->p, f), &s)) {
+    if (support_feature(b, dir, f, &s)) {
         set_free(&s.v);
         return -1;
     }

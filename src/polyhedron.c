@@ -53,6 +53,8 @@ void vrPolyhedron_Free(vrPolyhedron *p)
     free(p->face_edge);
     free(p->face_normal);
     free(p->face_offset);
+    free(p->face_spread);
+    free(p->face_drop);
     free(p);
 }
 
@@ -75,7 +77,9 @@ static vrPolyhedron *poly_alloc(int nv, int nf, int nh)
     p->face_edge = malloc(sizeof *p->face_edge * nh);
     p->face_normal = malloc(sizeof *p->face_normal * nf);
     p->face_offset = malloc(sizeof *p->face_offset * nf);
-    if (!p->vert || !p->vert_normal || !p->edge_v || !p->edge_f || !p->vert_edge_start || !p->vert_edge
+    p->face_spread = malloc(sizeof *p->face_spread * nf);
+    p->face_drop = malloc(sizeof *p->face_drop * nf);
+    if (!p->face_spread || !p->face_drop || !p->vert || !p->vert_normal || !p->edge_v || !p->edge_f || !p->vert_edge_start || !p->vert_edge
         || !p->face_start || !p->face_vert || !p->face_edge || !p->face_normal || !p->face_offset) {
         vrPolyhedron_Free(p);
         return NULL;
@@ -248,6 +252,40 @@ static int compute_planes(vrPolyhedron *p, char *err, size_t errlen)
     return 0;
 }
 
+static int on_face(const vrPolyhedron *p, int f, int v)
+{
+    int k;
+    for (k = p->face_start[f]; k < p->face_start[f + 1]; k++)
+        if (p->face_vert[k] == v) return 1;
+    return 0;
+}
+
+/* A face's spread and drop along its normal (contact.c: when they leave
+ * room, a direction near the normal has exactly the face as its support
+ * set).  The highest other vertex is a neighbour of the face: on a convex
+ * polyhedron every vertex below the top has a higher neighbour. */
+static void compute_margins(vrPolyhedron *p)
+{
+    int f, k, j;
+    for (f = 0; f < p->nf; f++) {
+        vec3 n = p->face_normal[f];
+        double lo = HUGE_VAL, hi = -HUGE_VAL, other = -HUGE_VAL;
+        for (k = p->face_start[f]; k < p->face_start[f + 1]; k++) {
+            int v = p->face_vert[k];
+            double h = vec3_dot(n, p->vert[v]);
+            lo = fmin(lo, h);
+            hi = fmax(hi, h);
+            for (j = p->vert_edge_start[v]; j < p->vert_edge_start[v + 1]; j++) {
+                const int *ev = p->edge_v[p->vert_edge[j]];
+                int w = ev[0] == v ? ev[1] : ev[0];
+                if (!on_face(p, f, w)) other = fmax(other, vec3_dot(n, p->vert[w]));
+            }
+        }
+        p->face_spread[f] = hi - lo;
+        p->face_drop[f] = lo - other;
+    }
+}
+
 /* signed distance of vertex v above the plane of face f */
 static double above(const vrPolyhedron *p, int f, int v)
 {
@@ -338,6 +376,7 @@ static int from_faces(const vec3 *vert, int nv, const int *face_start, const int
         vrPolyhedron_Free(p);
         return -1;
     }
+    compute_margins(p);
     vrMass_Compute(p);
     *out = p;
     return 0;

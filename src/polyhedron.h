@@ -37,6 +37,8 @@ typedef struct vrPolyhedron {
     int *face_edge;
     vec3 *face_normal;     /* nf outward unit normals */
     double *face_offset;   /* nf: the plane is {x : n.x = offset}; offset > 0 */
+    double *face_spread;   /* nf: how far the face's vertices lie apart along its normal (merged facets) */
+    double *face_drop;     /* nf: how far the highest other vertex lies below its lowest one, along its normal */
 
     /* mass properties for uniform density (mass.c) */
     double volume;         /* geometric volume of the solid, m^3 */
