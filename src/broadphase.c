@@ -1,12 +1,9 @@
 /* broadphase.c — boxes for the rest of a frame, sorted and swept (see
  * broadphase.h), and the pair map. */
-#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include "broadphase.h"
 #include "grow.h"
-
-#define BOX_FOR_GOOD LLONG_MAX   /* vrBox.frame of a static body's box: kept until the body or d changes */
 
 void vrBroad_Init(vrBroadphase *bp)
 {
@@ -75,7 +72,7 @@ void vrBroad_Rebox(vrBroadphase *bp, vrBody *const *body, int id)
     if (!b || !(bp->t0 <= bp->T)) return;
     if (b->is_static) {
         static_extent(b, &x->lo, &x->hi);
-        x->frame = BOX_FOR_GOOD;
+        x->frame = VR_BOX_FOR_GOOD;
         pad = 0.0;
     } else {
         t1 = fmax(b->m.t0, bp->t0);
@@ -89,21 +86,6 @@ void vrBroad_Rebox(vrBroadphase *bp, vrBody *const *body, int id)
     x->hi = vec3_add(x->hi, vec3_make(pad, pad, pad));
     x->valid = 1;
 }
-
-const vrBox *vrBroad_Box(vrBroadphase *bp, vrBody *const *body, int id)
-{
-    vrBox *x = &bp->box[id];
-    if (x->frame != bp->frame && x->frame != BOX_FOR_GOOD) vrBroad_Rebox(bp, body, id);
-    return x;
-}
-
-static int disjoint(const vrBox *a, const vrBox *b)
-{
-    return a->hi.x < b->lo.x || b->hi.x < a->lo.x || a->hi.y < b->lo.y || b->hi.y < a->lo.y
-        || a->hi.z < b->lo.z || b->hi.z < a->lo.z;
-}
-
-int vrBroad_Apart(const vrBox *a, const vrBox *b) { return a->valid && b->valid && disjoint(a, b); }
 
 /* the sweep's order: lower x of the box, then id (invalid boxes first) */
 static int sweep_before(const vrBroadphase *bp, int a, int b)
@@ -150,7 +132,7 @@ int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0
         if (!a->valid) continue;
         for (j = i + 1; j < bp->nsweep && bp->box[bp->sweep[j]].lo.x <= a->hi.x; j++) {
             int x = bp->sweep[i], y = bp->sweep[j];
-            if (!disjoint(a, &bp->box[y])) meet(ctx, x < y ? x : y, x < y ? y : x);
+            if (!vrBox_Disjoint(a, &bp->box[y])) meet(ctx, x < y ? x : y, x < y ? y : x);
         }
     }
     return 0;

@@ -13,6 +13,7 @@
 #ifndef VROC_BROADPHASE_H
 #define VROC_BROADPHASE_H
 
+#include <limits.h>
 #include "body.h"
 
 typedef struct vrBox { vec3 lo, hi; int valid; long long frame; } vrBox;
@@ -41,12 +42,29 @@ void vrBroad_BodyChanged(vrBroadphase *bp, int id);
 /* a new envelope: every box is made anew, and none is valid until the
  * next frame */
 void vrBroad_SetEnvelope(vrBroadphase *bp, double d);
-/* the box of body id (body[id] may be NULL: no box) */
-const vrBox *vrBroad_Box(vrBroadphase *bp, vrBody *const *body, int id);
 /* the box of body id made again now (its motion changed) */
 void vrBroad_Rebox(vrBroadphase *bp, vrBody *const *body, int id);
+
+/* vrBox.frame of a static body's box: kept until the body or d changes */
+#define VR_BOX_FOR_GOOD LLONG_MAX
+
+/* the box of body id (body[id] may be NULL: no box); inline, as an event
+ * asks it for every pair of the bodies it changed */
+static inline const vrBox *vrBroad_Box(vrBroadphase *bp, vrBody *const *body, int id)
+{
+    vrBox *x = &bp->box[id];
+    if (x->frame != bp->frame && x->frame != VR_BOX_FOR_GOOD) vrBroad_Rebox(bp, body, id);
+    return x;
+}
+
+static inline int vrBox_Disjoint(const vrBox *a, const vrBox *b)
+{
+    return a->hi.x < b->lo.x || b->hi.x < a->lo.x || a->hi.y < b->lo.y || b->hi.y < a->lo.y
+        || a->hi.z < b->lo.z || b->hi.z < a->lo.z;
+}
+
 /* both boxes valid and apart */
-int vrBroad_Apart(const vrBox *a, const vrBox *b);
+static inline int vrBroad_Apart(const vrBox *a, const vrBox *b) { return a->valid && b->valid && vrBox_Disjoint(a, b); }
 /* A new frame [t0, T]: new boxes, sorted and swept.  Calls meet(ctx, x, y)
  * for every two held bodies (x < y) whose boxes overlap and boxless(ctx,
  * id) for every held body without a valid box.  Returns -1 (and calls

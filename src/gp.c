@@ -335,11 +335,13 @@ static int supported_pair(const vrOwner *o, int a, int b)
 
 /* pair pi of bodies x and y cannot come within d before the frame ends:
  * it can be dormant (with heap = 1; never while inside or supporting) */
-static int apart(vrOwner *o, int pi, int x, int y)
+static int apart_from(vrOwner *o, int pi, const vrBox *box_x, int x, int y)
 {
     if (!o->p.use_heap || (o->hot[pi] & HOT_INSIDE)) return 0;
-    return vrBroad_Apart(vrBroad_Box(&o->bp, o->body, x), vrBroad_Box(&o->bp, o->body, y)) && !supported_pair(o, x, y);
+    return vrBroad_Apart(box_x, vrBroad_Box(&o->bp, o->body, y)) && !supported_pair(o, x, y);
 }
+
+static int apart(vrOwner *o, int pi, int x, int y) { return apart_from(o, pi, vrBroad_Box(&o->bp, o->body, x), x, y); }
 
 static int pair_apart(vrOwner *o, int pi) { return apart(o, pi, o->pair[pi].a, o->pair[pi].b); }
 
@@ -393,6 +395,7 @@ void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
     for (i = 0; i < n; i++) {
         int id = ids[i], now_frozen;
         const vrIntList *l, *partner;
+        const vrBox *box;
         if (id >= o->bodycap || !o->body[id]) continue;
         l = &o->body_pairs[id];
         partner = &o->body_partners[id];
@@ -402,9 +405,10 @@ void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
             for (j = 0; j < l->n; j++) update_schedule(o, l->v[j]);
         o->was_frozen[id] = (unsigned char)now_frozen;
         /* each key was for the old motion: the pair is evaluated, or dormant */
+        box = vrBroad_Box(&o->bp, o->body, id);
         for (j = 0; j < l->n; j++) {
             int pi = l->v[j];
-            if (apart(o, pi, id, partner->v[j])) {
+            if (apart_from(o, pi, box, id, partner->v[j])) {
                 make_dormant(o, pi);
             } else {
                 o->hot[pi] &= (unsigned char)~HOT_DORMANT;
