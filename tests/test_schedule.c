@@ -4,6 +4,7 @@
 #include <string.h>
 #include "test.h"
 #include "schedule.h"
+#include "gp.h"
 
 #define TEST_LCG_SEED 777ULL
 #include "test_lcg.h"
@@ -105,10 +106,84 @@ static int test_grid_follows_thesis_rule_without_spin(void)
     return 0;
 }
 
+/* two 0.1 m spheres, no force: a at x0 moving +0.5 m/s, b at rest at 0 */
+static void closing_pair(vrBody *a, vrBody *b, double x0, vrFlight *f)
+{
+    mat33 unit = mat33_diag(0.004, 0.004, 0.004);
+    vrBody *x[2] = {a, b};
+    int i;
+    f->accel = vec3_zero();
+    f->max_linear = 50;
+    f->max_angular = 50;
+    for (i = 0; i < 2; i++) {
+        memset(x[i], 0, sizeof *x[i]);
+        x[i]->id = i;
+        x[i]->shape.kind = VR_SHAPE_SPHERE;
+        x[i]->shape.radius = 0.1;
+        vrBody_SetMassProperties(x[i], 1, &unit, 0.1, 0.1);
+    }
+    vrBody_Anchor(a, 0, vec3_make(x0, 0, 0), vec3_make(0.5, 0, 0), quat_identity(), vec3_zero(), f);
+    vrBody_Anchor(b, 0, vec3_zero(), vec3_zero(), quat_identity(), vec3_zero(), f);
+}
+
+/* the pair's distance at t, from the centres (spheres collide as spheres) */
+static double sphere_distance(vrBody *a, vrBody *b, double t)
+{
+    vrPose pa = vrPose_make(vec3_zero(), quat_identity()), pb = pa;
+    vrContact c;
+    vrBody_Position(a, t, &pa.p);
+    vrBody_Position(b, t, &pb.p);
+    vrContact_Distance(&a->shape, &pa, &b->shape, &pb, NULL, &c);
+    return c.dist;
+}
+
+/* SPEC 3.2: an impact inside a grid step is found by exactly 48 halvings
+ * of that step, the event at the upper end of the final bracket.  The
+ * owner's event time equals this file's own 48 halvings, to the bit, for an
+ * impact near 0.3 s and one near 40 s (where the bracket reaches adjacent
+ * doubles before the 48th halving and the owner stops early). */
+static int test_impact_time_is_the_upper_end_after_48_halvings(void)
+{
+    static const double x0[2] = {-0.36234567, -20.21234567}, t0[2] = {0, 30};
+    int c;
+    for (c = 0; c < 2; c++) {
+        vrBody a, b;
+        vrFlight f;
+        vrParams p;
+        vrGrid g;
+        vrEvent ev;
+        vrOwner *o = vrOwner_Create();
+        double lo, hi, d = 0.01;
+        long k;
+        int i;
+        closing_pair(&a, &b, x0[c], &f);
+        p.d = d, p.flight = f, p.use_heap = 1;
+        ENSURE(o != NULL);
+        vrOwner_SetParams(o, &p);
+        ENSURE(vrOwner_HoldBody(o, 0, &a) == 0 && vrOwner_HoldBody(o, 1, &b) == 0 && vrOwner_AddPair(o, 0, 1) == 0);
+        g.t0 = t0[c], g.T = t0[c] + 20, g.n = 2000, g.h = 0.01;
+        ENSURE(vrOwner_FirstEvent(o, &g, 1, &ev) == 1);
+        for (k = 1; sphere_distance(&a, &b, vrGrid_Point(&g, k)) > d; k++)
+            ;
+        lo = vrGrid_Point(&g, k - 1), hi = vrGrid_Point(&g, k);
+        for (i = 0; i < 48; i++) {
+            double mid = lo + 0.5 * (hi - lo);
+            if (sphere_distance(&a, &b, mid) <= d) hi = mid;
+            else lo = mid;
+        }
+        printf("    impact at %.17g s (exact %.17g s)\n", ev.t, (x0[c] + 0.21) / -0.5 + 0.0);
+        ENSURE(ev.a == 0 && ev.b == 1);
+        ENSURE_MSG(ev.t == hi, "owner %.17g, 48 halvings %.17g", ev.t, hi);
+        vrOwner_Free(o);
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     test_init(argc, argv);
     RUN_TEST(test_key_never_overestimates);
     RUN_TEST(test_grid_follows_thesis_rule_without_spin);
+    RUN_TEST(test_impact_time_is_the_upper_end_after_48_halvings);
     return test_summary();
 }
