@@ -537,8 +537,7 @@ static void event_query(vrOwner *o, vrPair *p, double t, vrPose *pa, vrPose *pb,
     for_events(o, p, t, pa, pb, c);
 }
 
-/* the first time in (lo, hi] with distance <= d: exactly BISECTIONS halvings,
- * the event at the upper end of the final bracket (SPEC 3.2) */
+/* the bisection's test: is the pair within d at t? */
 static int within_d(vrOwner *o, vrPair *p, double t)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
@@ -549,6 +548,8 @@ static int within_d(vrOwner *o, vrPair *p, double t)
     return vrContact_Within(&A->shape, &pa, &B->shape, &pb, &p->cache, o->p.d);
 }
 
+/* the first time in (lo, hi] with distance <= d: exactly BISECTIONS halvings,
+ * the event at the upper end of the final bracket (SPEC 3.2) */
 static double bisect(vrOwner *o, vrPair *p, double lo, double hi)
 {
     int i, lo_tested = 0;

@@ -79,8 +79,9 @@ static vrPolyhedron *poly_alloc(int nv, int nf, int nh)
     p->face_offset = malloc(sizeof *p->face_offset * nf);
     p->face_spread = malloc(sizeof *p->face_spread * nf);
     p->face_drop = malloc(sizeof *p->face_drop * nf);
-    if (!p->face_spread || !p->face_drop || !p->vert || !p->vert_normal || !p->edge_v || !p->edge_f || !p->vert_edge_start || !p->vert_edge
-        || !p->face_start || !p->face_vert || !p->face_edge || !p->face_normal || !p->face_offset) {
+    if (!p->vert || !p->vert_normal || !p->edge_v || !p->edge_f || !p->vert_edge_start || !p->vert_edge
+        || !p->face_start || !p->face_vert || !p->face_edge || !p->face_normal || !p->face_offset
+        || !p->face_spread || !p->face_drop) {
         vrPolyhedron_Free(p);
         return NULL;
     }
