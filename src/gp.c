@@ -28,6 +28,7 @@ typedef struct vrPair {
     int flagged;              /* to be evaluated at the next span start */
     double t_check;
     double key;               /* expected earliest event (in the heap when scheduled and finite) */
+    double quiet_until;       /* inside, but nothing can happen until then (quiet_slide) */
     int active;               /* index in the active list, or -1 */
     vrWalkCache cache;
 } vrPair;
@@ -42,7 +43,7 @@ typedef struct vrUndo {
     double at;                /* the evaluation time */
     int inside;
     double t_check;
-    double key;
+    double key, quiet_until;
 } vrUndo;
 
 typedef struct vrIntList { int n, cap; int *v; } vrIntList;
@@ -245,6 +246,7 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
     p->order = ((long long)a << 32) | (long long)b;
     p->t_check = -INFINITY;
     p->key = -INFINITY;
+    p->quiet_until = -INFINITY;
     p->active = -1;
     if (vrGrow((void **)&o->hot, &o->hotcap, o->npair + 1, sizeof *o->hot) != 0) return -1;
     o->hot[o->npair] = 0;
@@ -442,6 +444,7 @@ static void remember(vrOwner *o, int pi, double at)
     u->inside = o->pair[pi].inside;
     u->t_check = o->pair[pi].t_check;
     u->key = o->pair[pi].key;
+    u->quiet_until = o->pair[pi].quiet_until;
 }
 
 void vrOwner_Advance(vrOwner *o, double t)
@@ -452,6 +455,7 @@ void vrOwner_Advance(vrOwner *o, double t)
         vrPair *p = &o->pair[u->pair];
         if (u->at <= t) continue;
         p->t_check = u->t_check;
+        p->quiet_until = u->quiet_until;
         settle(o, u->pair, u->inside, u->key);
     }
     o->nundo = 0;
@@ -816,6 +820,42 @@ static int clear_by_spheres(vrOwner *o, int pi, double t)
     return 1;
 }
 
+/* A ball sliding on a level table, or grazing a wall: a sphere in the
+ * envelope of a static box with no rotation (its only support, if it has
+ * one), the contact normal an axis, no velocity or acceleration along it,
+ * and its centre over the face's inside (by 1e-9 m) until the frame ends.
+ * Its distance then stays the same bits, its contact point lies exactly
+ * beside its centre, and that point's normal velocity is exactly 0 however
+ * it spins: every evaluation until the frame's end would find what this
+ * one found, and none is made (with the heap; heap = 0 looks at every pair
+ * at every step).  Anything that changes either body flags the pair, and
+ * its evaluation starts afresh. */
+static int quiet_slide(vrOwner *o, const vrPair *p, double t, const vrContact *c)
+{
+    const vrBody *S = o->body[p->b], *B = o->body[p->a];
+    const double n[3] = {c->n.x, c->n.y, c->n.z};
+    double v0[3], acc[3], lo[3], hi[3], at[3], half[3];
+    vec3 l, h;
+    int k, j;
+    if (!is_sphere(S)) S = o->body[p->a], B = o->body[p->b];
+    if (!is_sphere(S) || !B->is_static || B->shape.kind != VR_SHAPE_BOX || !vrBody_IsFree(S) || S->nsupport > 1
+        || (S->nsupport == 1 && S->support[0].partner != B->id) || B->m.q0.w != 1 || B->m.q0.x != 0 || B->m.q0.y != 0 || B->m.q0.z != 0)
+        return 0;
+    for (k = 0; k < 3 && fabs(n[k]) != 1; k++)
+        ;
+    if (k == 3 || n[(k + 1) % 3] != 0 || n[(k + 2) % 3] != 0) return 0;
+    v0[0] = S->m.v0.x, v0[1] = S->m.v0.y, v0[2] = S->m.v0.z;
+    acc[0] = S->m.a.x, acc[1] = S->m.a.y, acc[2] = S->m.a.z;
+    if (v0[k] != 0 || acc[k] != 0) return 0;
+    vrBody_PathBox(S, t, o->bp.T, &l, &h);
+    lo[0] = l.x, lo[1] = l.y, lo[2] = l.z, hi[0] = h.x, hi[1] = h.y, hi[2] = h.z;
+    at[0] = B->m.x0.x, at[1] = B->m.x0.y, at[2] = B->m.x0.z;
+    half[0] = B->shape.half.x, half[1] = B->shape.half.y, half[2] = B->shape.half.z;
+    for (j = 0; j < 3; j++)
+        if (j != k && !(lo[j] - at[j] > -half[j] + 1e-9 && hi[j] - at[j] < half[j] - 1e-9)) return 0;
+    return 1;
+}
+
 /* Evaluates pair pi at t.  t_prev is the previous grid point (t_prev == t at
  * a span start, where no step can be bisected).  Returns 1 with *ev when the
  * pair has an event. */
@@ -825,6 +865,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     vrPose pa, pb;
     vrContact c;
     remember(o, pi, t);
+    p->quiet_until = -INFINITY;
     if (clear_by_spheres(o, pi, t) || clear_by_walk(o, pi, t)) return 0;
     query(o, p, t, 1, &pa, &pb, &c);   /* the region is only made inside the envelope */
     p->t_check = t;
@@ -839,7 +880,9 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     }
     settle(o, pi, 1, t);
     for_events(o, p, t, &pa, &pb, &c);   /* the query above had the region: event_query's */
-    return inside_events(o, ev, t, p, &pa, &pb, &c);
+    if (inside_events(o, ev, t, p, &pa, &pb, &c)) return 1;
+    if (o->p.use_heap && quiet_slide(o, p, t, &c)) p->quiet_until = o->bp.T;
+    return 0;
 }
 
 /* ---- the look-ahead ------------------------------------------------------------ */
@@ -920,7 +963,8 @@ static void collect_due(vrOwner *o, double t)
     }
     /* the order pairs are evaluated in at one grid point does not matter:
      * they do not touch each other, and events are sorted afterwards */
-    for (id = 0; id < o->active.n; id++) list_push(&o->due, o->active.v[id]);
+    for (id = 0; id < o->active.n; id++)
+        if (!(o->pair[o->active.v[id]].quiet_until >= t)) list_push(&o->due, o->active.v[id]);
     while ((id = vrHeap_Top(&o->heap, &key)) >= 0 && key <= t) {
         vrHeap_Pop(&o->heap);
         o->heap_pops++;
