@@ -47,9 +47,6 @@ static vrFeature feat(int type, int index)
     return f;
 }
 
-/* branch-free: the walk's inner loops run over vertex stars */
-static int other_end(const vrPolyhedron *p, int e, int v) { return p->edge_v[e][0] ^ p->edge_v[e][1] ^ v; }
-
 static int feature_valid(const vrPolyhedron *p, vrFeature f)
 {
     int n[3];
@@ -129,7 +126,7 @@ static void vertex_region(const vrPolyhedron *p, int v, vec3 x, double tol, Wors
     int k;
     for (k = p->vert_edge_start[v]; k < p->vert_edge_start[v + 1]; k++) {
         int e = p->vert_edge[k];
-        vec3 d = vec3_sub(p->vert[other_end(p, e, v)], p->vert[v]);
+        vec3 d = vec3_sub(p->vert[vrPolyhedron_OtherEnd(p, e, v)], p->vert[v]);
         consider(w, vec3_dot(r, d), vec3_len2(d), tol, VR_EDGE, e);
     }
 }
@@ -256,7 +253,7 @@ static int steepest_edge(const vrPolyhedron *p, int v, vec3 dir, double tol)
     double bestv = 0;
     for (k = 0; k < n; k++) {
         int e = p->vert_edge[p->vert_edge_start[v] + k];
-        vec3 d = vec3_sub(p->vert[other_end(p, e, v)], p->vert[v]);
+        vec3 d = vec3_sub(p->vert[vrPolyhedron_OtherEnd(p, e, v)], p->vert[v]);
         double s = vec3_dot(dir, d), l2;
         if (s <= 0) continue;
         l2 = vec3_len2(d);

@@ -90,11 +90,6 @@ typedef struct Body { const vrPolyhedron *p; const vrPose *pose; } Body;
 
 static vec3 world_vert(const Body *b, int i) { return vrPose_apply(b->pose, b->p->vert[i]); }
 
-static int other_end(const vrPolyhedron *p, int e, int v)
-{
-    return p->edge_v[e][0] == v ? p->edge_v[e][1] : p->edge_v[e][0];
-}
-
 /* A neighbour of v higher along d (body frame), until none is.  *gap, if
  * not NULL, receives how far the top stands above its highest neighbour. */
 static int climb(const vrPolyhedron *p, vec3 d, int v, double *gap)
@@ -102,7 +97,7 @@ static int climb(const vrPolyhedron *p, vec3 d, int v, double *gap)
     double h = vec3_dot(d, p->vert[v]), below = -HUGE_VAL;
     int k = p->vert_edge_start[v];
     while (k < p->vert_edge_start[v + 1]) {
-        int w = other_end(p, p->vert_edge[k], v);
+        int w = vrPolyhedron_OtherEnd(p, p->vert_edge[k], v);
         double hw = vec3_dot(d, p->vert[w]);
         if (hw > h) { /* move up and scan the new star */
             v = w;
@@ -128,7 +123,7 @@ static int collect(const vrPolyhedron *p, vec3 d, int seed, double floor, IntSet
     for (i = 0; i < out->n; i++) {
         int v = out->v[i];
         for (k = p->vert_edge_start[v]; k < p->vert_edge_start[v + 1]; k++) {
-            int w = other_end(p, p->vert_edge[k], v);
+            int w = vrPolyhedron_OtherEnd(p, p->vert_edge[k], v);
             if (vec3_dot(d, p->vert[w]) >= floor && !set_has(out, w) && set_add(out, w)) return -1;
         }
     }
@@ -174,7 +169,7 @@ static int edge_between(const vrPolyhedron *p, int v, int w)
 {
     int k;
     for (k = p->vert_edge_start[v]; k < p->vert_edge_start[v + 1]; k++)
-        if (other_end(p, p->vert_edge[k], v) == w) return p->vert_edge[k];
+        if (vrPolyhedron_OtherEnd(p, p->vert_edge[k], v) == w) return p->vert_edge[k];
     return -1;
 }
 

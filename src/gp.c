@@ -833,26 +833,22 @@ static int clear_by_spheres(vrOwner *o, int pi, double t)
 static int quiet_slide(vrOwner *o, const vrPair *p, double t, const vrContact *c)
 {
     const vrBody *S = o->body[p->b], *B = o->body[p->a];
-    const double n[3] = {c->n.x, c->n.y, c->n.z};
-    double v0[3], acc[3], lo[3], hi[3], at[3], half[3];
-    vec3 l, h;
+    vec3 lo, hi;
     int k, j;
     if (!is_sphere(S)) S = o->body[p->a], B = o->body[p->b];
     if (!is_sphere(S) || !B->is_static || B->shape.kind != VR_SHAPE_BOX || !vrBody_IsFree(S) || S->nsupport > 1
-        || (S->nsupport == 1 && S->support[0].partner != B->id) || B->m.q0.w != 1 || B->m.q0.x != 0 || B->m.q0.y != 0 || B->m.q0.z != 0)
+        || (S->nsupport == 1 && S->support[0].partner != B->id))
         return 0;
-    for (k = 0; k < 3 && fabs(n[k]) != 1; k++)
+    if (B->m.q0.w != 1 || B->m.q0.x != 0 || B->m.q0.y != 0 || B->m.q0.z != 0) return 0;
+    for (k = 0; k < 3 && fabs(vec3_get(c->n, k)) != 1; k++)
         ;
-    if (k == 3 || n[(k + 1) % 3] != 0 || n[(k + 2) % 3] != 0) return 0;
-    v0[0] = S->m.v0.x, v0[1] = S->m.v0.y, v0[2] = S->m.v0.z;
-    acc[0] = S->m.a.x, acc[1] = S->m.a.y, acc[2] = S->m.a.z;
-    if (v0[k] != 0 || acc[k] != 0) return 0;
-    vrBody_PathBox(S, t, o->bp.T, &l, &h);
-    lo[0] = l.x, lo[1] = l.y, lo[2] = l.z, hi[0] = h.x, hi[1] = h.y, hi[2] = h.z;
-    at[0] = B->m.x0.x, at[1] = B->m.x0.y, at[2] = B->m.x0.z;
-    half[0] = B->shape.half.x, half[1] = B->shape.half.y, half[2] = B->shape.half.z;
-    for (j = 0; j < 3; j++)
-        if (j != k && !(lo[j] - at[j] > -half[j] + 1e-9 && hi[j] - at[j] < half[j] - 1e-9)) return 0;
+    if (k == 3 || vec3_get(c->n, (k + 1) % 3) != 0 || vec3_get(c->n, (k + 2) % 3) != 0) return 0;
+    if (vec3_get(S->m.v0, k) != 0 || vec3_get(S->m.a, k) != 0) return 0;
+    vrBody_PathBox(S, t, o->bp.T, &lo, &hi);
+    for (j = 0; j < 3; j++) {
+        double at = vec3_get(B->m.x0, j), half = vec3_get(B->shape.half, j);
+        if (j != k && !(vec3_get(lo, j) - at > -half + 1e-9 && vec3_get(hi, j) - at < half - 1e-9)) return 0;
+    }
     return 1;
 }
 

@@ -69,6 +69,12 @@ void vrBody_Position(const vrBody *b, double t, vec3 *x)
     }
 }
 
+static void widen(vec3 *lo, vec3 *hi, vec3 x)
+{
+    *lo = vec3_min(*lo, x);
+    *hi = vec3_max(*hi, x);
+}
+
 /* Along each axis the path is a parabola until the speed cap and a line
  * after it: its extremes are at t1, t2, the cap, or where that axis's
  * velocity turns round before the cap. */
@@ -82,12 +88,10 @@ void vrBody_PathBox(const vrBody *b, double t1, double t2, vec3 *lo, vec3 *hi)
     vrBody_Position(b, t1, lo);
     *hi = *lo;
     vrBody_Position(b, t2, &x);
-    *lo = vec3_min(*lo, x);
-    *hi = vec3_max(*hi, x);
+    widen(lo, hi, x);
     if (cap > t1 && cap < t2) {
         vrBody_Position(b, cap, &x);
-        *lo = vec3_min(*lo, x);
-        *hi = vec3_max(*hi, x);
+        widen(lo, hi, x);
     }
     for (k = 0; k < 3; k++) {
         double turn;
@@ -95,8 +99,7 @@ void vrBody_PathBox(const vrBody *b, double t1, double t2, vec3 *lo, vec3 *hi)
         turn = m->t0 - v0[k] / a[k];
         if (turn > t1 && turn < t2 && turn < cap) {
             vrBody_Position(b, turn, &x);
-            *lo = vec3_min(*lo, x);
-            *hi = vec3_max(*hi, x);
+            widen(lo, hi, x);
         }
     }
 }

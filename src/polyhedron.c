@@ -277,8 +277,7 @@ static void compute_margins(vrPolyhedron *p)
             lo = fmin(lo, h);
             hi = fmax(hi, h);
             for (j = p->vert_edge_start[v]; j < p->vert_edge_start[v + 1]; j++) {
-                const int *ev = p->edge_v[p->vert_edge[j]];
-                int w = ev[0] == v ? ev[1] : ev[0];
+                int w = vrPolyhedron_OtherEnd(p, p->vert_edge[j], v);
                 if (!on_face(p, f, w)) other = fmax(other, vec3_dot(n, p->vert[w]));
             }
         }

@@ -69,6 +69,9 @@ void vrPolyhedron_Free(vrPolyhedron *p);
 /* helpers over the graph */
 static inline int vrPolyhedron_FaceSize(const vrPolyhedron *p, int f) { return p->face_start[f + 1] - p->face_start[f]; }
 static inline int vrPolyhedron_VertDegree(const vrPolyhedron *p, int v) { return p->vert_edge_start[v + 1] - p->vert_edge_start[v]; }
+/* the vertex at the other end of edge e from its vertex v; branch-free, as
+ * the walk's inner loops run over vertex stars */
+static inline int vrPolyhedron_OtherEnd(const vrPolyhedron *p, int e, int v) { return p->edge_v[e][0] ^ p->edge_v[e][1] ^ v; }
 
 /* mass.c: fills volume, inertia_unit, r_in, r_out of a polyhedron whose
  * vertices are already centred (divergence theorem over the faces). */

@@ -203,14 +203,16 @@ static klu_numeric *numeric_for(vrResponder *r)
 {
     unsigned long long bits[2], h;
     vrPattern *slot;
+    int i;
     pattern_of(r, bits);
     h = (bits[0] ^ (bits[1] * 0x9E3779B97F4A7C15ull)) * 0xBF58476D1CE4E5B9ull;
-    for (slot = &r->pattern[(h >> 32) % PATTERNS]; slot->numeric; slot = slot == &r->pattern[PATTERNS - 1] ? r->pattern : slot + 1)
-        if (slot->bits[0] == bits[0] && slot->bits[1] == bits[1]) return slot->numeric;
+    for (i = (int)((h >> 32) % PATTERNS); r->pattern[i].numeric; i = (i + 1) % PATTERNS)
+        if (r->pattern[i].bits[0] == bits[0] && r->pattern[i].bits[1] == bits[1]) return r->pattern[i].numeric;
     if (4 * (r->npattern + 1) > 3 * PATTERNS) {
         forget_patterns(r);
         return numeric_for(r);
     }
+    slot = &r->pattern[i];
     slot->bits[0] = bits[0];
     slot->bits[1] = bits[1];
     slot->numeric = canonical_for(r, bits);
