@@ -745,9 +745,7 @@ static vrWorld *quiet_scene(int heap)
     vrWorld *w = new_world(0.05, 0.01, 9.8);
     vrObjectId spinner;
     double spin[3] = {0, 30, 20};
-    vrSettings s = *vrWorld_Settings(w);
-    s.heap = heap;
-    vrWorld_SetSettings(w, &s, NULL, 0);
+    if (!heap) set(w, heap_off);
     box(w, "table", vec3_make(1, 1, 0.05), vec3_make(0, 0, 0), -1, 1);
     box(w, "wall", vec3_make(0.05, 1, 3), vec3_make(5, 0, 0), -1, 1);
     sphere(w, "slider", 0.1, vec3_make(0.013, 0, 0.155), vec3_make(1, 0, 0), 1, 1); /* off mid-frame */

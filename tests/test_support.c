@@ -9,15 +9,8 @@
 #include "../src/contact.c"
 #include "test.h"
 
-static unsigned long long state = 0x9E3779B97F4A7C15ull;
-
-static double rnd01(void) /* xorshift64*, [0, 1) */
-{
-    state ^= state >> 12;
-    state ^= state << 25;
-    state ^= state >> 27;
-    return (double)((state * 2685821657736338717ull) >> 11) / 9007199254740992.0;
-}
+#define TEST_LCG_SEED 0x9E3779B97F4A7C15ULL
+#include "test_lcg.h"
 
 /* the same feature and the same vertices */
 static int same_support(const Support *x, const Support *y)
@@ -50,7 +43,7 @@ static int test_face_shortcut_equals_the_search(void)
                 Body b;
                 Support fast, search;
                 vec3 n = p[s]->face_normal[f], t1 = vec3_orthogonal(n), t2 = vec3_cross(n, t1);
-                double phi = 2 * VR_PI * rnd01();
+                double phi = 2 * VR_PI * uni();
                 vec3 axis = vec3_add(vec3_scale(t1, cos(phi)), vec3_scale(t2, sin(phi)));
                 vec3 dir = quat_rotate(quat_from_axis_angle(axis, tilt[k]), n);
                 vrFeature face = {VR_FACE, f}, vertex = {VR_VERTEX, p[s]->face_vert[p[s]->face_start[f]]};
