@@ -972,17 +972,21 @@ int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const 
  * distance finished from the same walk (a second walk from where the first
  * ended would only confirm it). */
 int vrContact_Within(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
-                     vrWalkCache *cache, double d)
+                     vrWalkCache *cache, double d, vrContact *seen)
 {
     vrContact c;
     vec3 ca, cb;
     int pen;
     double dw;
+    if (!seen) seen = &c;
     if (a->kind == VR_SHAPE_SPHERE || b->kind == VR_SHAPE_SPHERE || !a->poly || !b->poly || !cache) {
-        contact(a, pa, b, pb, -1, cache, &c);
-        return c.dist <= d;
+        contact(a, pa, b, pb, -1, cache, seen);
+        return seen->dist <= d;
     }
     dw = vrClosest_Walk(a->poly, pa, b->poly, pb, cache, &ca, &cb, NULL, &pen);
+    seen->dist = pen ? fmin(dw, 0.0) : dw;
+    seen->pa = ca;
+    seen->pb = cb;
     if (!pen && dw > 0 && fabs(dw - d) > VR_QUICK_TOL) return dw < d;
     c.dist = dw;
     c.npoints = 0;

@@ -100,9 +100,13 @@ int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const 
 /* Is the distance <= d?  The walk's own distance decides when it is more
  * than VR_QUICK_TOL from d (the canonical answer is then the same), else
  * vrContact_Distance's, finished from the same walk: the bisection's test
- * (SPEC 3.2), one walk a call. */
+ * (SPEC 3.2), one walk a call.  seen (may be NULL) gets what was measured:
+ * dist, and closest points pa, pb that are points of the bodies (the
+ * walk's for polyhedra, which may differ from vrContact_Distance's in the
+ * last bits or, for parallel faces, in place); dist <= 0 when the shapes
+ * touch or overlap. */
 int vrContact_Within(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
-                     vrWalkCache *cache, double d);
+                     vrWalkCache *cache, double d, vrContact *seen);
 
 /* The posed shape's point farthest along dir (non-zero): a sphere's surface
  * point, a polyhedron's vertex (the first of equals; O(vertices)).  libccd's

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "gp.h"
+#include "distbound.h"
 #include "broadphase.h"
 #include "grow.h"
 #include "heap.h"
@@ -541,30 +542,69 @@ static void event_query(vrOwner *o, vrPair *p, double t, vrPose *pa, vrPose *pb,
     for_events(o, p, t, pa, pb, c);
 }
 
-/* the bisection's test: is the pair within d at t? */
-static int within_d(vrOwner *o, vrPair *p, double t)
+/* the bisection's test: is the pair within d at t?  When what was measured
+ * can bound the distance nearby (a gap and closest points), *near gets
+ * those bounds for times in [lo, hi]. */
+static int within_d(vrOwner *o, vrPair *p, double t, double lo, double hi, vrDistBound *near)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
     vrPose pa, pb;
+    vrContact seen;
+    int in;
     shape_pose(A, t, &pa);
     shape_pose(B, t, &pb);
     o->checks++;
-    return vrContact_Within(&A->shape, &pa, &B->shape, &pb, &p->cache, o->p.d);
+    in = vrContact_Within(&A->shape, &pa, &B->shape, &pb, &p->cache, o->p.d, &seen);
+    near->valid = 0;
+    /* bounds from a measurement within a few tolerances of d cannot decide
+     * anything beside it: not worth making */
+    if (seen.dist > 0 && fabs(seen.dist - o->p.d) > 4e-12)
+        vrDistBound_Make(near, A, &pa, B, &pb, t, seen.pa, seen.pb, 1, lo, hi);
+    return in;
+}
+
+/* what the bounds from the bracket's two ends say about the distance at t */
+static int decided(const vrOwner *o, const vrDistBound near[2], double t)
+{
+    int k, say;
+    for (k = 0; k < 2; k++)
+        if ((say = vrDistBound_Decide(&near[k], t, o->p.d, 1e-12)) >= 0) return say;
+    return -1;
 }
 
 /* the first time in (lo, hi] with distance <= d: exactly BISECTIONS halvings,
- * the event at the upper end of the final bracket (SPEC 3.2) */
-static double bisect(vrOwner *o, vrPair *p, double lo, double hi)
+ * the event at the upper end of the final bracket (SPEC 3.2).  at_hi is the
+ * query at hi.  A halving whose answer the bounds from a measurement at
+ * either end of the bracket prove (distbound.h) is not asked of the
+ * geometry: the same answers, so the same bracket, from a few walks. */
+static double bisect(vrOwner *o, vrPair *p, double lo, double hi, const vrContact *at_hi)
 {
+    const double lo0 = lo, hi0 = hi;
+    vrDistBound near[2];      /* from the measurements at lo and at hi */
+    vrPose pa, pb;
     int i, lo_tested = 0;
+    near[0].valid = near[1].valid = 0;
+    if (at_hi->dist > 0) {
+        shape_pose(o->body[p->a], hi, &pa);
+        shape_pose(o->body[p->b], hi, &pb);
+        /* the query's closest points are canonical, not always points of
+         * the bodies: its direction bounds from below only */
+        vrDistBound_Make(&near[1], o->body[p->a], &pa, o->body[p->b], &pb, hi, at_hi->pa, at_hi->pb, 0, lo0, hi0);
+    }
     for (i = 0; i < BISECTIONS; i++) {
         double mid = lo + 0.5 * (hi - lo);
+        vrDistBound seen;
+        int in;
         /* Once lo and hi are adjacent doubles the midpoint rounds to one of
          * them and the halvings left change nothing (late in a run, with
          * times of tens of seconds, a dozen of the 48): hi tests true, a lo
          * that was tested false does again, so neither is tested twice. */
         if (mid == hi || (mid == lo && lo_tested)) break;
-        if (within_d(o, p, mid)) hi = mid;
+        if ((in = decided(o, near, mid)) < 0) {
+            in = within_d(o, p, mid, lo0, hi0, &seen);
+            near[in] = seen;
+        }
+        if (in) hi = mid;
         else lo = mid, lo_tested = 1;
     }
     return hi;
@@ -870,7 +910,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
         settle(o, pi, 0, vrSchedule_Key(o->body[p->a], o->body[p->b], t, c.dist, c.n, o->p.d, &o->p.flight));
         return was_inside || t == t_prev ? lost_support(o, ev, t, p, &c) : 0;
     }
-    if (!p->inside && t > t_prev && impact(o, ev, p, bisect(o, p, t_prev, t))) {
+    if (!p->inside && t > t_prev && impact(o, ev, p, bisect(o, p, t_prev, t, &c))) {
         settle(o, pi, p->inside, t);  /* due again at once: it is rolled back or re-evaluated */
         return 1;
     }

@@ -1,0 +1,122 @@
+/* distbound.c — Taylor bounds on a pair's distance near a measurement
+ * (see distbound.h for what they are and why they hold). */
+#include "distbound.h"
+
+/* the side's constant angular velocity in free flight, or 0 when it does
+ * not turn (or, as a true sphere, turns without moving its surface);
+ * returns 0 when its spin is not constant */
+static int constant_spin(const vrBody *b, vec3 *w)
+{
+    *w = vec3_zero();
+    if (b->shape.kind == VR_SHAPE_SPHERE || b->rot == VR_ROT_NONE) return 1;
+    if (b->rot != VR_ROT_ISOTROPIC) return 0;
+    *w = vec3_scale(b->m.L, 1.0 / b->moments.x);
+    return 1;
+}
+
+/* How far the side reaches along out at te (its support), and when it
+ * turns, the vertices that could be the highest within |tau| <= span: one
+ * below the top by more than 2 |omega| R span cannot overtake the top,
+ * which falls by at most |omega| R span while it rises by as much. */
+static double reach(vrBoundSide *s, const vrBody *b, const vrPose *pose, vec3 out, vec3 w, double span)
+{
+    const vrPolyhedron *poly = b->shape.poly;
+    vec3 ob, rate;
+    double top, slack = 2.0 * s->w_len * s->r_out * span + 1e-12;
+    int i;
+    if (b->shape.kind == VR_SHAPE_SPHERE) return vec3_dot(out, pose->p) + b->shape.radius;
+    ob = mat33_tmulv(&pose->R, out);   /* in the body frame: one rotation, not one per vertex */
+    top = vec3_dot(ob, poly->vert[0]);
+    for (i = 1; i < poly->nv; i++) {
+        double h = vec3_dot(ob, poly->vert[i]);
+        if (h > top) top = h;
+    }
+    if (s->w_len == 0) return vec3_dot(out, pose->p) + top;
+    rate = vec3_cross(ob, mat33_tmulv(&pose->R, w));
+    for (i = 0; i < poly->nv && s->nv >= 0; i++) {
+        double g = vec3_dot(ob, poly->vert[i]) - top;
+        if (g < -slack) continue;
+        if (s->nv == VR_DISTBOUND_VERTS) {
+            s->nv = -1;
+            break;
+        }
+        s->g[s->nv] = g;
+        s->s[s->nv] = vec3_dot(poly->vert[i], rate);   /* out . (omega x r) */
+        s->nv++;
+    }
+    return vec3_dot(out, pose->p) + top;
+}
+
+/* one side seen from te along its outward direction: its support there in
+ * *top; 0 when it gives no bounds */
+static int side_make(vrBoundSide *s, vrBody *b, const vrPose *pose, vec3 out, vec3 witness,
+                     double te, double lo, double hi, double *top)
+{
+    vec3 w = vec3_zero(), r = vec3_sub(witness, pose->p);
+    s->v = s->a = s->u = s->acc = vec3_zero();
+    s->w_len = s->jerk = 0;
+    s->r_out = b->r_out;
+    s->nv = 0;
+    if (vrBody_IsFree(b)) {                              /* else static or resting: frozen */
+        if (lo < b->m.t0 || hi > b->m.t0 + b->m.tcap) return 0; /* the speed cap would bend the path */
+        if (!constant_spin(b, &w)) return 0;
+        vrBody_Velocity(b, te, &s->v);
+        s->a = b->m.a;
+        s->w_len = vec3_len(w);
+        s->u = vec3_add(s->v, vec3_cross(w, r));
+        s->acc = vec3_add(s->a, vec3_cross(w, vec3_cross(w, r)));
+        s->jerk = s->w_len * s->w_len * s->w_len * vec3_len(r);
+    }
+    *top = reach(s, b, pose, out, w, hi - lo);
+    return 1;
+}
+
+void vrDistBound_Make(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrBody *B, const vrPose *pose_b,
+                      double te, vec3 pa, vec3 pb, int on_bodies, double lo, double hi)
+{
+    vec3 gap = vec3_sub(pb, pa);
+    double len = vec3_len(gap), top_a, top_b;
+    db->valid = 0;
+    if (!(len > 0) || !(lo <= te && te <= hi)) return;
+    db->te = te;
+    db->gap0 = gap;
+    db->has_upper = on_bodies;
+    db->n = vec3_scale(gap, 1.0 / len);
+    if (!side_make(&db->a, A, pose_a, db->n, pa, te, lo, hi, &top_a)
+        || !side_make(&db->b, B, pose_b, vec3_neg(db->n), pb, te, lo, hi, &top_b))
+        return;
+    db->gap_n = -top_b - top_a;
+    db->valid = 1;
+}
+
+/* how much higher the side's support along its outward direction can be at tau */
+static double rise(const vrBoundSide *s, double tau)
+{
+    double turn = 0.5 * s->w_len * s->w_len * s->r_out * tau * tau, lin = -INFINITY;
+    int i;
+    if (s->w_len == 0) return 0;
+    if (s->nv < 0) return s->w_len * s->r_out * fabs(tau) + turn;
+    for (i = 0; i < s->nv; i++) {
+        double h = s->g[i] + s->s[i] * tau;
+        if (h > lin) lin = h;
+    }
+    return lin + turn;
+}
+
+int vrDistBound_Decide(const vrDistBound *db, double t, double d, double tol)
+{
+    double tau = t - db->te, lower, upper;
+    vec3 dv, rel;
+    if (!db->valid) return -1;
+    /* the gap along n: the centres move exactly, the turning supports at most rise() */
+    dv = vec3_madd(vec3_scale(vec3_sub(db->b.v, db->a.v), tau), 0.5 * tau * tau, vec3_sub(db->b.a, db->a.a));
+    lower = db->gap_n + vec3_dot(db->n, dv) - rise(&db->a, tau) - rise(&db->b, tau);
+    if (lower > d + tol) return 0;
+    if (!db->has_upper) return -1;
+    /* the witness points carried along: their distance is at least the bodies' */
+    rel = vec3_madd(vec3_madd(db->gap0, tau, vec3_sub(db->b.u, db->a.u)), 0.5 * tau * tau,
+                    vec3_sub(db->b.acc, db->a.acc));
+    upper = vec3_len(rel) + (db->a.jerk + db->b.jerk) * fabs(tau * tau * tau) / 6.0;
+    if (upper < d - tol) return 1;
+    return -1;
+}

@@ -1,0 +1,67 @@
+/* distbound.h — bounds on a pair's distance near an instant where it was
+ * measured, from the free flight of its two bodies (Taylor models).
+ *
+ * The impact bisection (SPEC 3.2) halves a grid step 48 times (or until
+ * its ends are adjacent doubles), and each halving asks "within d?".  Far
+ * from the crossing the answer is plain from one measurement nearby: the
+ * bodies cannot have closed or opened the gap enough.  These bounds prove
+ * it, so the bisection asks the geometry only where they cannot; the
+ * bracket it ends with, and so every bit of the event time, is the same.
+ *
+ * From a measurement at te (unit direction n from a to b, closest points
+ * pa on a and pb on b), for t = te + tau in the window given:
+ *  - lower bound: the gap along the fixed direction n.  A centre moves
+ *    exactly as v tau + a tau^2/2 (no speed cap inside the window); a body
+ *    turning at constant omega moves a vertex r along n at most as
+ *    n.r + n.(omega x r) tau + |omega|^2 |r| tau^2 / 2 (Taylor, with the
+ *    second derivative's bound), and its support along n is the largest of
+ *    these over the vertices that could be highest;
+ *  - upper bound: the distance between the material points pa and pb,
+ *    carried by their bodies: the second-order Taylor polynomial of each,
+ *    plus |omega|^3 |r| |tau|^3 / 6 for what it leaves out.
+ * True spheres collide by their centres, so they count as not turning.
+ * Bodies whose spin is not constant (two or three different moments of
+ * inertia) or that meet the speed cap inside the window give no bounds.
+ */
+#ifndef VROC_DISTBOUND_H
+#define VROC_DISTBOUND_H
+
+#include "body.h"
+
+/* support vertices a side keeps; more candidates than this and it bounds
+ * their motion by |omega| R |tau| instead */
+#define VR_DISTBOUND_VERTS 16
+
+typedef struct vrBoundSide {
+    vec3 v, a;            /* centre velocity at te, acceleration */
+    vec3 u, acc;          /* velocity and acceleration of the material witness point at te */
+    double w_len, r_out;  /* |omega|; outer radius about the centre */
+    double jerk;          /* |omega|^3 |r|: bounds the witness point's third derivative */
+    int nv;               /* -1: bound by |omega| R |tau|; else candidate vertices */
+    double g[VR_DISTBOUND_VERTS], s[VR_DISTBOUND_VERTS]; /* height below the support, rate along n */
+} vrBoundSide;
+
+typedef struct vrDistBound {
+    int valid;
+    double te;
+    double gap_n;         /* gap between the supports along n at te */
+    vec3 n;
+    vec3 gap0;            /* pb - pa at te */
+    int has_upper;        /* pa and pb are points of the bodies */
+    vrBoundSide a, b;
+} vrDistBound;
+
+/* Bounds from a measurement at te with closest points pa, pb (dist =
+ * |pb - pa| > 0) and the bodies' poses at te, for times in [lo, hi]
+ * (te among them).  The lower bound only takes its direction from them;
+ * the upper bound needs them to be points of the bodies (a canonical
+ * face-face contact's projected point need not be): on_bodies = 0 leaves
+ * it out.  db->valid = 0 when the bodies' motion allows no bounds. */
+void vrDistBound_Make(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrBody *B, const vrPose *pose_b,
+                      double te, vec3 pa, vec3 pb, int on_bodies, double lo, double hi);
+
+/* 1 when the distance at t (in the window) is certainly <= d, 0 when it is
+ * certainly > d, -1 when the bounds come within tol of d (or are invalid). */
+int vrDistBound_Decide(const vrDistBound *db, double t, double d, double tol);
+
+#endif
