@@ -96,6 +96,10 @@ void vrBody_Restore(vrBody *b, double t0, vec3 x0, vec3 v0, quat q0, vec3 L, con
 /* re-anchor at t keeping the motion (after a change of settings or supports) */
 void vrBody_Reanchor(vrBody *b, double t, const vrFlight *f);
 void vrBody_Pose(vrBody *b, double t, vrPose *pose);
+/* the pose a distance or a region needs: a sphere collides as a true
+ * sphere, so only its centre is computed (the identity stands in for its
+ * turning); what needs a sphere's spin takes vrBody_Pose */
+void vrBody_ShapePose(vrBody *b, double t, vrPose *pose);
 void vrBody_Position(const vrBody *b, double t, vec3 *x);
 void vrBody_Velocity(const vrBody *b, double t, vec3 *v);
 /* world angular velocity at t (needs the orientation at t) */

@@ -58,17 +58,39 @@ static int side_make(vrBoundSide *s, vrBody *b, const vrPose *pose, vec3 out, ve
     s->r_out = b->r_out;
     s->nv = 0;
     if (vrBody_IsFree(b)) {                              /* else static or resting: frozen */
-        if (lo < b->m.t0 || hi > b->m.t0 + b->m.tcap) return 0; /* the speed cap would bend the path */
+        double cap = b->m.t0 + b->m.tcap;
+        /* the speed cap must not bend the path inside the window: it comes
+         * after it, or came before (the path is then a line) */
+        if (lo < b->m.t0 || (lo < cap && hi > cap)) return 0;
         if (!constant_spin(b, &w)) return 0;
         vrBody_Velocity(b, te, &s->v);
-        s->a = b->m.a;
+        s->a = lo < cap ? b->m.a : vec3_zero();
         s->w_len = vec3_len(w);
         s->u = vec3_add(s->v, vec3_cross(w, r));
         s->acc = vec3_add(s->a, vec3_cross(w, vec3_cross(w, r)));
         s->jerk = s->w_len * s->w_len * s->w_len * vec3_len(r);
     }
     *top = reach(s, b, pose, out, w, hi - lo);
+    /* no surface point gets farther than R from the centre */
+    s->headroom = b->r_out - (*top - vec3_dot(out, pose->p));
     return 1;
+}
+
+void vrDistBound_MakeAlong(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrBody *B, const vrPose *pose_b,
+                           double te, vec3 n, double lo, double hi)
+{
+    double top_a, top_b;
+    db->valid = 0;
+    if (!(lo <= te && te <= hi)) return;
+    db->te = te;
+    db->gap0 = vec3_zero();
+    db->has_upper = 0;
+    db->n = n;
+    if (!side_make(&db->a, A, pose_a, n, pose_a->p, te, lo, hi, &top_a)
+        || !side_make(&db->b, B, pose_b, vec3_neg(n), pose_b->p, te, lo, hi, &top_b))
+        return;
+    db->gap_n = -top_b - top_a;
+    db->valid = 1;
 }
 
 void vrDistBound_Make(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrBody *B, const vrPose *pose_b,
@@ -95,22 +117,61 @@ static double rise(const vrBoundSide *s, double tau)
     double turn = 0.5 * s->w_len * s->w_len * s->r_out * tau * tau, lin = -INFINITY;
     int i;
     if (s->w_len == 0) return 0;
-    if (s->nv < 0) return s->w_len * s->r_out * fabs(tau) + turn;
+    if (s->nv < 0) return fmin(s->w_len * s->r_out * fabs(tau) + turn, s->headroom);
     for (i = 0; i < s->nv; i++) {
         double h = s->g[i] + s->s[i] * tau;
         if (h > lin) lin = h;
     }
-    return lin + turn;
+    return fmin(lin + turn, s->headroom);
+}
+
+/* the fastest the side's support can rise at tau >= 0: its steepest
+ * line, plus the turn term's slope */
+static double rise_rate(const vrBoundSide *s, double *per_tau)
+{
+    double top = 0;
+    int i;
+    *per_tau = s->w_len * s->w_len * s->r_out;
+    if (s->w_len == 0) return 0;
+    if (s->nv < 0) return s->w_len * s->r_out;
+    for (i = 0; i < s->nv; i++)
+        if (s->s[i] > top) top = s->s[i];
+    return top;
+}
+
+static double lower_at(const vrDistBound *db, double tau)
+{
+    vec3 dv = vec3_madd(vec3_scale(vec3_sub(db->b.v, db->a.v), tau), 0.5 * tau * tau, vec3_sub(db->b.a, db->a.a));
+    return db->gap_n + vec3_dot(db->n, dv) - rise(&db->a, tau) - rise(&db->b, tau);
+}
+
+double vrDistBound_Clear(const vrDistBound *db, double d, double until)
+{
+    double tau = 0, span = until - db->te, c0, c1, ka, kb, closing;
+    int it;
+    if (!db->valid) return db->te;
+    closing = -vec3_dot(db->n, vec3_sub(db->b.v, db->a.v));
+    c0 = fmax(0.0, closing) + rise_rate(&db->a, &ka) + rise_rate(&db->b, &kb);
+    c1 = fabs(vec3_dot(db->n, vec3_sub(db->b.a, db->a.a))) + ka + kb;
+    for (it = 0; it < 8; it++) {
+        double y = lower_at(db, tau) - d, b1, step;
+        if (!(y > 0)) break;
+        /* the gap cannot close faster than c0 + c1 tau */
+        b1 = c0 + c1 * tau;
+        step = c1 > 0 ? 2 * y / (b1 + sqrt(b1 * b1 + 2 * c1 * y)) : b1 > 0 ? y / b1 : INFINITY;
+        tau += step;
+        if (tau >= span) return until;
+    }
+    return db->te + tau;
 }
 
 int vrDistBound_Decide(const vrDistBound *db, double t, double d, double tol)
 {
     double tau = t - db->te, lower, upper;
-    vec3 dv, rel;
+    vec3 rel;
     if (!db->valid) return -1;
     /* the gap along n: the centres move exactly, the turning supports at most rise() */
-    dv = vec3_madd(vec3_scale(vec3_sub(db->b.v, db->a.v), tau), 0.5 * tau * tau, vec3_sub(db->b.a, db->a.a));
-    lower = db->gap_n + vec3_dot(db->n, dv) - rise(&db->a, tau) - rise(&db->b, tau);
+    lower = lower_at(db, tau);
     if (lower > d + tol) return 0;
     if (!db->has_upper) return -1;
     /* the witness points carried along: their distance is at least the bodies' */

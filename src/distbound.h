@@ -1,21 +1,26 @@
 /* distbound.h — bounds on a pair's distance near an instant where it was
  * measured, from the free flight of its two bodies (Taylor models).
  *
- * The impact bisection (SPEC 3.2) halves a grid step 48 times (or until
- * its ends are adjacent doubles), and each halving asks "within d?".  Far
- * from the crossing the answer is plain from one measurement nearby: the
- * bodies cannot have closed or opened the gap enough.  These bounds prove
- * it, so the bisection asks the geometry only where they cannot; the
- * bracket it ends with, and so every bit of the event time, is the same.
+ * Two users.  The impact bisection (SPEC 3.2) halves a grid step 48 times
+ * (or until its ends are adjacent doubles), and each halving asks "within
+ * d?".  Far from the crossing the answer is plain from one measurement
+ * nearby: the bodies cannot have closed or opened the gap enough.  These
+ * bounds prove it, so the bisection asks the geometry only where they
+ * cannot; the bracket it ends with, and so every bit of the event time, is
+ * the same.  And the schedule's key (SPEC 3.3) for turning bodies close
+ * together: the lower bound says how long the pair surely stays apart,
+ * following the vertices that are near rather than assuming the worst
+ * point comes at |omega| R.
  *
  * From a measurement at te (unit direction n from a to b, closest points
  * pa on a and pb on b), for t = te + tau in the window given:
  *  - lower bound: the gap along the fixed direction n.  A centre moves
- *    exactly as v tau + a tau^2/2 (no speed cap inside the window); a body
- *    turning at constant omega moves a vertex r along n at most as
+ *    exactly as v tau + a tau^2/2 (a line once the speed cap is reached);
+ *    a body turning at constant omega moves a vertex r along n at most as
  *    n.r + n.(omega x r) tau + |omega|^2 |r| tau^2 / 2 (Taylor, with the
  *    second derivative's bound), and its support along n is the largest of
- *    these over the vertices that could be highest;
+ *    these over the vertices that could be highest, and never more than R
+ *    from the centre;
  *  - upper bound: the distance between the material points pa and pb,
  *    carried by their bodies: the second-order Taylor polynomial of each,
  *    plus |omega|^3 |r| |tau|^3 / 6 for what it leaves out.
@@ -36,6 +41,7 @@ typedef struct vrBoundSide {
     vec3 v, a;            /* centre velocity at te, acceleration */
     vec3 u, acc;          /* velocity and acceleration of the material witness point at te */
     double w_len, r_out;  /* |omega|; outer radius about the centre */
+    double headroom;      /* how much higher the support can ever get: R less its height at te */
     double jerk;          /* |omega|^3 |r|: bounds the witness point's third derivative */
     int nv;               /* -1: bound by |omega| R |tau|; else candidate vertices */
     double g[VR_DISTBOUND_VERTS], s[VR_DISTBOUND_VERTS]; /* height below the support, rate along n */
@@ -59,6 +65,12 @@ typedef struct vrDistBound {
  * it out.  db->valid = 0 when the bodies' motion allows no bounds. */
 void vrDistBound_Make(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrBody *B, const vrPose *pose_b,
                       double te, vec3 pa, vec3 pb, int on_bodies, double lo, double hi);
+
+/* lower bound only, along the unit direction n (a toward b) */
+void vrDistBound_MakeAlong(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrBody *B, const vrPose *pose_b,
+                           double te, vec3 n, double lo, double hi);
+/* a time up to `until` (in the window) before which the lower bound stays above d */
+double vrDistBound_Clear(const vrDistBound *db, double d, double until);
 
 /* 1 when the distance at t (in the window) is certainly <= d, 0 when it is
  * certainly > d, -1 when the bounds come within tol of d (or are invalid). */

@@ -467,20 +467,8 @@ void vrOwner_Advance(vrOwner *o, double t)
 
 static int is_sphere(const vrBody *b) { return b->shape.kind == VR_SHAPE_SPHERE; }
 
-/* A sphere collides as a true sphere: a distance or a region needs only its
- * centre, so its turning is not computed for them (the identity stands in).
- * What needs a sphere's spin (approach speeds, responses) takes real_poses. */
-static void shape_pose(vrBody *b, double t, vrPose *pose)
-{
-    if (!is_sphere(b)) {
-        vrBody_Pose(b, t, pose);
-        return;
-    }
-    vrBody_Position(b, t, &pose->p);
-    pose->q = quat_identity();
-    pose->R = mat33_identity();
-}
-
+/* what needs a sphere's spin (approach speeds, responses): its real pose,
+ * where distances took vrBody_ShapePose's */
 static void real_poses(vrOwner *o, const vrPair *p, double t, vrPose *pa, vrPose *pb)
 {
     if (is_sphere(o->body[p->a])) vrBody_Pose(o->body[p->a], t, pa);
@@ -490,8 +478,8 @@ static void real_poses(vrOwner *o, const vrPair *p, double t, vrPose *pa, vrPose
 static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPose *pb, vrContact *c)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
-    shape_pose(A, t, pa);
-    shape_pose(B, t, pb);
+    vrBody_ShapePose(A, t, pa);
+    vrBody_ShapePose(B, t, pb);
     o->checks++;
     if (region) vrContact_Region(&A->shape, pa, &B->shape, pb, o->p.d, &p->cache, c);
     else vrContact_Distance(&A->shape, pa, &B->shape, pb, &p->cache, c);
@@ -551,8 +539,8 @@ static int within_d(vrOwner *o, vrPair *p, double t, double lo, double hi, vrDis
     vrPose pa, pb;
     vrContact seen;
     int in;
-    shape_pose(A, t, &pa);
-    shape_pose(B, t, &pb);
+    vrBody_ShapePose(A, t, &pa);
+    vrBody_ShapePose(B, t, &pb);
     o->checks++;
     in = vrContact_Within(&A->shape, &pa, &B->shape, &pb, &p->cache, o->p.d, &seen);
     near->valid = 0;
@@ -585,8 +573,8 @@ static double bisect(vrOwner *o, vrPair *p, double lo, double hi, const vrContac
     int i, lo_tested = 0;
     near[0].valid = near[1].valid = 0;
     if (at_hi->dist > 0) {
-        shape_pose(o->body[p->a], hi, &pa);
-        shape_pose(o->body[p->b], hi, &pb);
+        vrBody_ShapePose(o->body[p->a], hi, &pa);
+        vrBody_ShapePose(o->body[p->b], hi, &pb);
         /* the query's closest points are canonical, not always points of
          * the bodies: its direction bounds from below only */
         vrDistBound_Make(&near[1], o->body[p->a], &pa, o->body[p->b], &pb, hi, at_hi->pa, at_hi->pb, 0, lo0, hi0);

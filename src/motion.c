@@ -326,6 +326,17 @@ void vrBody_Reanchor(vrBody *b, double t, const vrFlight *f)
 
 /* ---- derived quantities ---------------------------------------------------- */
 
+void vrBody_ShapePose(vrBody *b, double t, vrPose *pose)
+{
+    if (b->shape.kind != VR_SHAPE_SPHERE) {
+        vrBody_Pose(b, t, pose);
+        return;
+    }
+    vrBody_Position(b, t, &pose->p);
+    pose->q = quat_identity();
+    pose->R = mat33_identity();
+}
+
 vec3 vrBody_Omega(const vrBody *b, const vrPose *pose)
 {
     if (b->rot == VR_ROT_NONE) return vec3_zero();

@@ -2,6 +2,7 @@
  * earliest collision time of a pair (thesis 3.3.1.1), SPEC 3.2–3.3. */
 #include <float.h>
 #include "schedule.h"
+#include "distbound.h"
 
 /* what the key leaves on the table for rounding in distances and poses */
 #define KEY_MARGIN 1e-9
@@ -166,6 +167,29 @@ static double key_for(const vrClosing *k, vec3 n, const vrBody *a, const vrBody 
     return fmax(key_any_direction(k, a, b), key_along_normal(k, n, a, b));
 }
 
+/* when b's speed cap could bend its path after t (INFINITY: never) */
+static double cap_time(const vrBody *b, double t)
+{
+    double cap = b->m.t0 + b->m.tcap;
+    return moves(b) && t < cap ? cap : INFINITY;
+}
+
+/* Turning bodies close together: the support of each along n followed
+ * vertex by vertex (distbound.h), which sees how fast the near vertices
+ * really come, not only that some point could come at |omega| R.  Looks
+ * at most KEY_HORIZON ahead. */
+#define KEY_HORIZON 1.0
+static double key_by_vertices(vrBody *a, vrBody *b, double t, vec3 n, double d)
+{
+    vrPose pa, pb;
+    vrDistBound db;
+    double until = fmin(t + KEY_HORIZON, fmin(cap_time(a, t), cap_time(b, t)));
+    vrBody_ShapePose(a, t, &pa);
+    vrBody_ShapePose(b, t, &pb);
+    vrDistBound_MakeAlong(&db, a, &pa, b, &pb, t, n, t, until);
+    return vrDistBound_Clear(&db, d + KEY_MARGIN, until);
+}
+
 static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f, int turning)
 {
     vrClosing whole, rate;
@@ -189,7 +213,7 @@ static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d,
     rate = whole;
     whole.room -= spin_margin(a) + spin_margin(b);
     rate.spin = spin_rate(a) + spin_rate(b);
-    return t + fmax(key_for(&whole, n, a, b), key_for(&rate, n, a, b));
+    return fmax(t + fmax(key_for(&whole, n, a, b), key_for(&rate, n, a, b)), key_by_vertices(a, b, t, n, d));
 }
 
 double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)

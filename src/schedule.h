@@ -25,8 +25,10 @@ long vrSchedule_FirstPointAtOrAfter(const vrGrid *g, double t);
  * closing speed bounded piecewise and split at the speed cap (thesis eq. 5).
  * With n, the unit normal from a toward b at t, the bound also uses the
  * direction of motion (thesis 6.3): a pair moving apart is not checked
- * again until the speed caps could turn it round.  Returns t when the pair
- * is due now, INFINITY when it can never close. */
+ * again until the speed caps could turn it round; and for turning boxes
+ * (constant spin) the support of each along n vertex by vertex
+ * (distbound.h).  Each bound holds, so the latest does.  Returns t when
+ * the pair is due now, INFINITY when it can never close. */
 double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f);
 /* The same from the bounding spheres about the centres (a sphere's own),
  * which do not change as the bodies turn: dist is the distance between the

@@ -166,6 +166,36 @@ static int test_bounds_follow_the_vertex_that_overtakes(void)
     return 0;
 }
 
+/* A cube sliding under a plate at the speed cap keeps its velocity though
+ * gravity pulls (SPEC 3.2): bounds made after the cap follow a line, not
+ * the parabola the force alone would give. */
+static int test_bounds_after_the_cap_follow_a_line(void)
+{
+    vrBody a, b;
+    vrFlight f;
+    vrContact c, at;
+    vrDistBound db;
+    vrPose pa, pb;
+    int k, crossed = 0;
+    f.accel = vec3_make(0, 0, -9.8);
+    f.max_linear = 2;
+    f.max_angular = 1e3;
+    make_body(&a, 1, CUBE, 0);
+    make_body(&b, 2, PLATE, 1);
+    vrBody_Anchor(&a, 0, vec3_zero(), vec3_make(3, 0, 0), quat_identity(), vec3_zero(), &f);   /* clamped to 2 m/s */
+    vrBody_Anchor(&b, 0, vec3_make(0, 0, 0.35), vec3_zero(), quat_identity(), vec3_zero(), &f);
+    measure(&a, &b, 0.01, &c, &pa, &pb);
+    vrDistBound_Make(&db, &a, &pa, &b, &pb, 0.01, c.pa, c.pb, 1, 0.01, 0.07);
+    ENSURE(db.valid && c.dist > 0.149 && a.m.tcap == 0);
+    for (k = 1; k <= 60; k++) {
+        double t = 0.01 + 1e-3 * k;
+        measure(&a, &b, t, &at, &pa, &pb);
+        if (at.dist > 0) crossed += vrDistBound_Decide(&db, t, at.dist, 1e-13) >= 0;
+    }
+    ENSURE(crossed == 0);
+    return 0;
+}
+
 /* No bounds for what they do not model: a plate tumbling (its spin is not
  * constant), or a body reaching the speed cap inside the window. */
 static int test_no_bounds_for_tumbling_or_capped_motion(void)
@@ -213,6 +243,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_bounds_never_cross_the_distance);
     RUN_TEST(test_bounds_decide_near_the_measurement);
     RUN_TEST(test_bounds_follow_the_vertex_that_overtakes);
+    RUN_TEST(test_bounds_after_the_cap_follow_a_line);
     RUN_TEST(test_no_bounds_for_tumbling_or_capped_motion);
     rc = test_summary();
     vrPolyhedron_Free(cube_poly);
