@@ -116,7 +116,8 @@ void vrBody_PathBox(const vrBody *b, double t1, double t2, vec3 *lo, vec3 *hi);
 double vrBody_SpeedBound(const vrBody *b, double t, double span, double accel, double max_linear);
 /* |L| / I_min: a bound on |omega| in free flight */
 double vrBody_SpinBound(const vrBody *b);
-int vrBody_IsFree(const vrBody *b);  /* dynamic and not resting */
+/* dynamic and not resting */
+static inline int vrBody_IsFree(const vrBody *b) { return !b->is_static && !b->resting; }
 double vrBody_Energy(vrBody *b, double t, vec3 g);
 
 #endif

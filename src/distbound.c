@@ -22,19 +22,20 @@ static double reach(vrBoundSide *s, const vrBody *b, const vrPose *pose, vec3 ou
 {
     const vrPolyhedron *poly = b->shape.poly;
     vec3 ob, rate;
-    double top, slack = 2.0 * s->w_len * s->r_out * span + 1e-12;
-    int i;
+    double top, slack = 2.0 * s->w_len * s->r_out * span + 1e-12, h[VR_DISTBOUND_VERTS];
+    int i, keep = poly && poly->nv <= VR_DISTBOUND_VERTS;
     if (b->shape.kind == VR_SHAPE_SPHERE) return vec3_dot(out, pose->p) + b->shape.radius;
     ob = mat33_tmulv(&pose->R, out);   /* in the body frame: one rotation, not one per vertex */
-    top = vec3_dot(ob, poly->vert[0]);
-    for (i = 1; i < poly->nv; i++) {
-        double h = vec3_dot(ob, poly->vert[i]);
-        if (h > top) top = h;
+    top = -INFINITY;
+    for (i = 0; i < poly->nv; i++) {
+        double x = vec3_dot(ob, poly->vert[i]);
+        if (keep) h[i] = x;
+        if (x > top) top = x;
     }
     if (s->w_len == 0) return vec3_dot(out, pose->p) + top;
     rate = vec3_cross(ob, mat33_tmulv(&pose->R, w));
     for (i = 0; i < poly->nv && s->nv >= 0; i++) {
-        double g = vec3_dot(ob, poly->vert[i]) - top;
+        double g = (keep ? h[i] : vec3_dot(ob, poly->vert[i])) - top;
         if (g < -slack) continue;
         if (s->nv == VR_DISTBOUND_VERTS) {
             s->nv = -1;
@@ -49,10 +50,10 @@ static double reach(vrBoundSide *s, const vrBody *b, const vrPose *pose, vec3 ou
 
 /* one side seen from te along its outward direction: its support there in
  * *top; 0 when it gives no bounds */
-static int side_make(vrBoundSide *s, vrBody *b, const vrPose *pose, vec3 out, vec3 witness,
+static int side_make(vrBoundSide *s, vrBody *b, const vrPose *pose, vec3 out, const vec3 *witness,
                      double te, double lo, double hi, double *top)
 {
-    vec3 w = vec3_zero(), r = vec3_sub(witness, pose->p);
+    vec3 w = vec3_zero();
     s->v = s->a = s->u = s->acc = vec3_zero();
     s->w_len = s->jerk = 0;
     s->r_out = b->r_out;
@@ -66,9 +67,12 @@ static int side_make(vrBoundSide *s, vrBody *b, const vrPose *pose, vec3 out, ve
         vrBody_Velocity(b, te, &s->v);
         s->a = lo < cap ? b->m.a : vec3_zero();
         s->w_len = vec3_len(w);
-        s->u = vec3_add(s->v, vec3_cross(w, r));
-        s->acc = vec3_add(s->a, vec3_cross(w, vec3_cross(w, r)));
-        s->jerk = s->w_len * s->w_len * s->w_len * vec3_len(r);
+        if (witness) {   /* for the upper bound */
+            vec3 r = vec3_sub(*witness, pose->p);
+            s->u = vec3_add(s->v, vec3_cross(w, r));
+            s->acc = vec3_add(s->a, vec3_cross(w, vec3_cross(w, r)));
+            s->jerk = s->w_len * s->w_len * s->w_len * vec3_len(r);
+        }
     }
     *top = reach(s, b, pose, out, w, hi - lo);
     /* no surface point gets farther than R from the centre */
@@ -86,8 +90,8 @@ void vrDistBound_MakeAlong(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrB
     db->gap0 = vec3_zero();
     db->has_upper = 0;
     db->n = n;
-    if (!side_make(&db->a, A, pose_a, n, pose_a->p, te, lo, hi, &top_a)
-        || !side_make(&db->b, B, pose_b, vec3_neg(n), pose_b->p, te, lo, hi, &top_b))
+    if (!side_make(&db->a, A, pose_a, n, NULL, te, lo, hi, &top_a)
+        || !side_make(&db->b, B, pose_b, vec3_neg(n), NULL, te, lo, hi, &top_b))
         return;
     db->gap_n = -top_b - top_a;
     db->valid = 1;
@@ -104,8 +108,8 @@ void vrDistBound_Make(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrBody *
     db->gap0 = gap;
     db->has_upper = on_bodies;
     db->n = vec3_scale(gap, 1.0 / len);
-    if (!side_make(&db->a, A, pose_a, db->n, pa, te, lo, hi, &top_a)
-        || !side_make(&db->b, B, pose_b, vec3_neg(db->n), pb, te, lo, hi, &top_b))
+    if (!side_make(&db->a, A, pose_a, db->n, &pa, te, lo, hi, &top_a)
+        || !side_make(&db->b, B, pose_b, vec3_neg(db->n), &pb, te, lo, hi, &top_b))
         return;
     db->gap_n = -top_b - top_a;
     db->valid = 1;
@@ -125,39 +129,80 @@ static double rise(const vrBoundSide *s, double tau)
     return fmin(lin + turn, s->headroom);
 }
 
-/* the fastest the side's support can rise at tau >= 0: its steepest
- * line, plus the turn term's slope */
-static double rise_rate(const vrBoundSide *s, double *per_tau)
-{
-    double top = 0;
-    int i;
-    *per_tau = s->w_len * s->w_len * s->r_out;
-    if (s->w_len == 0) return 0;
-    if (s->nv < 0) return s->w_len * s->r_out;
-    for (i = 0; i < s->nv; i++)
-        if (s->s[i] > top) top = s->s[i];
-    return top;
-}
-
 static double lower_at(const vrDistBound *db, double tau)
 {
     vec3 dv = vec3_madd(vec3_scale(vec3_sub(db->b.v, db->a.v), tau), 0.5 * tau * tau, vec3_sub(db->b.a, db->a.a));
     return db->gap_n + vec3_dot(db->n, dv) - rise(&db->a, tau) - rise(&db->b, tau);
 }
 
+/* A side looking forward only (tau >= 0): the lines that can be the
+ * highest there,
+ * the turn term's coefficient, the steepest rise rate, and the cap. */
+typedef struct vrAhead {
+    int n;                   /* -1: |omega| R tau */
+    double g[VR_DISTBOUND_VERTS], s[VR_DISTBOUND_VERTS];
+    double turn, steepest, headroom;
+} vrAhead;
+
+static void ahead_of(const vrBoundSide *side, vrAhead *f)
+{
+    int i, top;
+    f->n = 0;
+    f->turn = 0.5 * side->w_len * side->w_len * side->r_out;
+    f->steepest = 0;
+    f->headroom = side->headroom;
+    if (side->w_len == 0) return;
+    if (side->nv < 0) {
+        f->n = -1;
+        f->steepest = side->w_len * side->r_out;
+        return;
+    }
+    /* the top line at 0 (of those, the steepest) stays on the envelope until
+     * a steeper one overtakes it; no line as slow as it ever does */
+    for (i = top = 0; i < side->nv; i++)
+        if (side->g[i] > side->g[top] || (side->g[i] == side->g[top] && side->s[i] > side->s[top])) top = i;
+    for (i = 0; i < side->nv; i++) {
+        if (i != top && side->s[i] <= side->s[top]) continue;
+        f->g[f->n] = side->g[i];
+        f->s[f->n] = side->s[i];
+        if (side->s[i] > f->steepest) f->steepest = side->s[i];
+        f->n++;
+    }
+}
+
+static double ahead_rise(const vrAhead *f, double tau, double w_r)
+{
+    double top = -INFINITY;
+    int i;
+    if (f->n < 0) return fmin(w_r * tau + f->turn * tau * tau, f->headroom);
+    if (f->n == 0) return 0;
+    for (i = 0; i < f->n; i++) {
+        double h = f->g[i] + f->s[i] * tau;
+        if (h > top) top = h;
+    }
+    return fmin(top + f->turn * tau * tau, f->headroom);
+}
+
+/* Conservative advancement on the lower bound: from tau, whose bound is y
+ * above d, the gap cannot close faster than c0 + c1 tau', so nothing is
+ * within d before the step that covers y at that rate. */
 double vrDistBound_Clear(const vrDistBound *db, double d, double until)
 {
-    double tau = 0, span = until - db->te, c0, c1, ka, kb, closing;
+    double tau = 0, span = until - db->te, c0, c1, closing, accel;
+    vrAhead fa, fb;
     int it;
     if (!db->valid) return db->te;
-    closing = -vec3_dot(db->n, vec3_sub(db->b.v, db->a.v));
-    c0 = fmax(0.0, closing) + rise_rate(&db->a, &ka) + rise_rate(&db->b, &kb);
-    c1 = fabs(vec3_dot(db->n, vec3_sub(db->b.a, db->a.a))) + ka + kb;
+    closing = vec3_dot(db->n, vec3_sub(db->b.v, db->a.v));
+    accel = vec3_dot(db->n, vec3_sub(db->b.a, db->a.a));
+    ahead_of(&db->a, &fa);
+    ahead_of(&db->b, &fb);
+    c0 = fmax(0.0, -closing) + fa.steepest + fb.steepest;
+    c1 = fabs(accel) + 2 * (fa.turn + fb.turn);
     for (it = 0; it < 8; it++) {
-        double y = lower_at(db, tau) - d, b1, step;
+        double y = db->gap_n + closing * tau + 0.5 * accel * tau * tau - d
+                 - ahead_rise(&fa, tau, fa.steepest) - ahead_rise(&fb, tau, fb.steepest);
+        double b1 = c0 + c1 * tau, step;
         if (!(y > 0)) break;
-        /* the gap cannot close faster than c0 + c1 tau */
-        b1 = c0 + c1 * tau;
         step = c1 > 0 ? 2 * y / (b1 + sqrt(b1 * b1 + 2 * c1 * y)) : b1 > 0 ? y / b1 : INFINITY;
         tau += step;
         if (tau >= span) return until;

@@ -372,7 +372,6 @@ double vrBody_SpinBound(const vrBody *b)
     return b->is_static || b->i_min <= 0 ? 0.0 : vec3_len(b->m.L) / b->i_min;
 }
 
-int vrBody_IsFree(const vrBody *b) { return !b->is_static && !b->resting; }
 
 /* SPEC 1.3: 1/2 m v^2 + 1/2 omega.L - m g.x */
 double vrBody_Energy(vrBody *b, double t, vec3 g)
