@@ -206,6 +206,7 @@ double vrDistBound_Clear(const vrDistBound *db, double d, double until)
         step = c1 > 0 ? 2 * y / (b1 + sqrt(b1 * b1 + 2 * c1 * y)) : b1 > 0 ? y / b1 : INFINITY;
         tau += step;
         if (tau >= span) return until;
+        if (step < tau / 32) break;      /* the steps shrink geometrically: little left to gain */
     }
     return db->te + tau;
 }

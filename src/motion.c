@@ -18,6 +18,12 @@
 #define ISOTROPY_TOL 1e-12     /* relative difference of moments taken as equal */
 #define CHECKPOINT_EVERY 64
 
+/* |L| / I_min: what |omega| never exceeds in free flight */
+static double spin_of(const vrBody *b)
+{
+    return b->is_static || b->i_min <= 0 ? 0.0 : vec3_len(b->m.L) / b->i_min;
+}
+
 void vrBody_SetMassProperties(vrBody *b, double mass, const mat33 *inertia_unit, double r_in, double r_out)
 {
     mat33 axes;
@@ -41,6 +47,7 @@ void vrBody_SetMassProperties(vrBody *b, double mass, const mat33 *inertia_unit,
         b->sym_axis = 2;                /* I1 = I2: the distinct axis is z */
     else if (b->moments.z - b->moments.y <= span)
         b->sym_axis = 0;                /* I2 = I3: the distinct axis is x */
+    b->m.spin = spin_of(b);
 }
 
 /* ---- linear motion ------------------------------------------------------ */
@@ -253,6 +260,7 @@ static vec3 supported_accel(const vrBody *b, vec3 g)
 
 static void classify_rotation(vrBody *b)
 {
+    b->m.spin = spin_of(b);
     if (b->is_static || vec3_len2(b->m.L) == 0.0) b->rot = VR_ROT_NONE;
     else if (b->sym_axis == 3) b->rot = VR_ROT_ISOTROPIC;
     else if (b->sym_axis >= 0) b->rot = VR_ROT_SYMMETRIC;
@@ -363,14 +371,13 @@ mat33 vrBody_InertiaWorld(const vrBody *b, const vrPose *pose)
 double vrBody_SpeedBound(const vrBody *b, double t, double span, double accel, double max_linear)
 {
     vec3 v;
+    double s;
     vrBody_Velocity(b, t, &v);
-    return fmin(max_linear, vec3_len(v) + accel * span);
+    s = vec3_len(v) + accel * span;
+    return s < max_linear ? s : max_linear;
 }
 
-double vrBody_SpinBound(const vrBody *b)
-{
-    return b->is_static || b->i_min <= 0 ? 0.0 : vec3_len(b->m.L) / b->i_min;
-}
+double vrBody_SpinBound(const vrBody *b) { return b->m.spin; }
 
 
 /* SPEC 1.3: 1/2 m v^2 + 1/2 omega.L - m g.x */
