@@ -922,8 +922,12 @@ static int cmp_pairs(const void *x, const void *y) { return cmp_order(x, y, sort
 
 static void sort_pairs(vrOwner *o, vrIntList *l)
 {
+    int i;
+    for (i = 1; i < l->n && o->pair[l->v[i - 1]].order < o->pair[l->v[i]].order; i++)
+        ;
+    if (i >= l->n) return;    /* in order already, as pairs made in order are */
     sort_owner = o;
-    if (l->n > 1) qsort(l->v, (size_t)l->n, sizeof *l->v, cmp_pairs);
+    qsort(l->v, (size_t)l->n, sizeof *l->v, cmp_pairs);
 }
 
 static int cmp_events(const void *x, const void *y)

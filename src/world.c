@@ -598,12 +598,13 @@ static int pairable(const vrWorld *w, int i, int j)
     return !(w->obj[i]->body.is_static && w->obj[j]->body.is_static);
 }
 
-int vrWorld_Pending(const vrWorld *w, int id)
+unsigned char *vrWorld_PendingMarks(const vrWorld *w)
 {
+    unsigned char *mark = calloc((size_t)w->nobj + 1, 1);
     int i;
-    for (i = 0; i < w->pending.n; i++)
-        if (w->pending.body[i].id == id) return 1;
-    return 0;
+    for (i = 0; mark && i < w->pending.n; i++)
+        if (w->pending.body[i].id >= 0 && w->pending.body[i].id < w->nobj) mark[w->pending.body[i].id] = 1;
+    return mark;
 }
 
 /* every dynamic–dynamic and dynamic–static pair of a new object (SPEC 3.3:
@@ -669,18 +670,21 @@ static void retire_owner(vrWorld *w)
 static int make_serial_owner(vrWorld *w)
 {
     vrParams p = vrWorld_Params(w);
-    int i, j;
+    unsigned char *pending;
+    int i, j, rc = 0;
     w->owner = vrOwner_Create();
     if (!w->owner) return -1;
     vrOwner_SetParams(w->owner, &p);
     for (i = 0; i < w->nobj; i++)
         if (w->obj[i] && w->obj[i]->live && vrOwner_HoldBody(w->owner, i, &w->obj[i]->body) != 0) return -1;
-    for (i = 0; i < w->nobj; i++)
-        for (j = i + 1; j < w->nobj; j++) {
+    if (!(pending = vrWorld_PendingMarks(w))) return -1;
+    for (i = 0; i < w->nobj && rc == 0; i++)
+        for (j = i + 1; j < w->nobj && rc == 0; j++) {
             if (!w->obj[i] || !w->obj[j] || !w->obj[i]->live || !w->obj[j]->live || !pairable(w, i, j)) continue;
-            if (vrOwner_AddPairAt(w->owner, i, j, w->t, vrWorld_Pending(w, i) || vrWorld_Pending(w, j)) != 0) return -1;
+            rc = vrOwner_AddPairAt(w->owner, i, j, w->t, pending[i] || pending[j]);
         }
-    return 0;
+    free(pending);
+    return rc;
 }
 
 static const vrOwnerSet *owners(const vrWorld *w);

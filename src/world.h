@@ -84,8 +84,9 @@ int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up);
 int vrWorld_PutObject(vrWorld *w, int id, const vrObjectDef *def, const char *off_text, char *err, size_t n);
 /* builds what changed and places new objects; no pairs */
 int vrWorld_Ready(vrWorld *w, char *err, size_t n);
-/* is body id's state in pending (a pair of it is evaluated afresh)? */
-int vrWorld_Pending(const vrWorld *w, int id);
+/* by body id (nobj + 1 bytes, to free; NULL when out of memory): 1 when
+ * its state is pending, so that a pair of it is evaluated afresh */
+unsigned char *vrWorld_PendingMarks(const vrWorld *w);
 
 /* parallel/sgp.c */
 extern const vrOwnerSet vrSgp_Owners;

@@ -401,6 +401,7 @@ static int encode_setup(vrWorld *w, vrSgp *s, int g, const int *pi, const int *p
     vrUpdate states;
     vroc_body_def_t *defs;
     char *need = calloc((size_t)w->nobj + 1, 1);
+    unsigned char *pending = vrWorld_PendingMarks(w);
     int k, i, np = 0, r = -1;
     vrParams p = vrWorld_Params(w);
     memset(&m, 0, sizeof m);
@@ -412,12 +413,12 @@ static int encode_setup(vrWorld *w, vrSgp *s, int g, const int *pi, const int *p
     m.b = malloc((size_t)(np + 1) * sizeof *m.b);
     m.flagged = malloc((size_t)(np + 1) * sizeof *m.flagged);
     defs = calloc((size_t)w->nobj + 1, sizeof *defs);
-    if (need && m.a && m.b && m.flagged && defs) {
+    if (need && pending && m.a && m.b && m.flagged && defs) {
         for (k = 0; k < d->npairs; k++)
             if (d->gp_of[k] == g) {
                 m.a[m.npairs] = pi[k];
                 m.b[m.npairs] = pj[k];
-                m.flagged[m.npairs++] = vrWorld_Pending(w, pi[k]) || vrWorld_Pending(w, pj[k]);
+                m.flagged[m.npairs++] = pending[pi[k]] || pending[pj[k]];
             }
         for (i = 0; i < w->nobj; i++)
             if (need[i]) {
@@ -439,6 +440,7 @@ static int encode_setup(vrWorld *w, vrSgp *s, int g, const int *pi, const int *p
         }
     }
     free(need);
+    free(pending);
     free(m.a);
     free(m.b);
     free(m.flagged);
