@@ -121,12 +121,12 @@ static double rise(const vrBoundSide *s, double tau)
     double turn = 0.5 * s->w_len * s->w_len * s->r_out * tau * tau, lin = -INFINITY;
     int i;
     if (s->w_len == 0) return 0;
-    if (s->nv < 0) return fmin(s->w_len * s->r_out * fabs(tau) + turn, s->headroom);
+    if (s->nv < 0) return vr_min(s->w_len * s->r_out * fabs(tau) + turn, s->headroom);
     for (i = 0; i < s->nv; i++) {
         double h = s->g[i] + s->s[i] * tau;
         if (h > lin) lin = h;
     }
-    return fmin(lin + turn, s->headroom);
+    return vr_min(lin + turn, s->headroom);
 }
 
 static double lower_at(const vrDistBound *db, double tau)
@@ -174,13 +174,13 @@ static double ahead_rise(const vrAhead *f, double tau, double w_r)
 {
     double top = -INFINITY;
     int i;
-    if (f->n < 0) return fmin(w_r * tau + f->turn * tau * tau, f->headroom);
+    if (f->n < 0) return vr_min(w_r * tau + f->turn * tau * tau, f->headroom);
     if (f->n == 0) return 0;
     for (i = 0; i < f->n; i++) {
         double h = f->g[i] + f->s[i] * tau;
         if (h > top) top = h;
     }
-    return fmin(top + f->turn * tau * tau, f->headroom);
+    return vr_min(top + f->turn * tau * tau, f->headroom);
 }
 
 /* Conservative advancement on the lower bound: from tau, whose bound is y
@@ -196,7 +196,7 @@ double vrDistBound_Clear(const vrDistBound *db, double d, double until)
     accel = vec3_dot(db->n, vec3_sub(db->b.a, db->a.a));
     ahead_of(&db->a, &fa);
     ahead_of(&db->b, &fb);
-    c0 = fmax(0.0, -closing) + fa.steepest + fb.steepest;
+    c0 = vr_max(0.0, -closing) + fa.steepest + fb.steepest;
     c1 = fabs(accel) + 2 * (fa.turn + fb.turn);
     for (it = 0; it < 8; it++) {
         double y = db->gap_n + closing * tau + 0.5 * accel * tau * tau - d

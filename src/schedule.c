@@ -36,8 +36,8 @@ void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, do
     g->n = 1;
     if (fastest > 0) {
         /* never finer than the clock can tell apart */
-        double steps = ceil(span * 2.0 * fastest / d), finest = span / (8.0 * DBL_EPSILON * fmax(1.0, fabs(T)));
-        g->n = steps > 1 ? (long)fmin(steps, finest) : 1;
+        double steps = ceil(span * 2.0 * fastest / d), finest = span / (8.0 * DBL_EPSILON * vr_max(1.0, fabs(T)));
+        g->n = steps > 1 ? (long)vr_min(steps, finest) : 1;
     }
     g->h = span / (double)g->n;
 }
@@ -93,7 +93,7 @@ static double covered(double c, double k, double L)
 static double cover(double *room, double *c, double k, double len, double cmax)
 {
     double ramp = len, dist;
-    if (k > 0 && (cmax - *c) / k < ramp) ramp = fmax(0.0, (cmax - *c) / k);
+    if (k > 0 && (cmax - *c) / k < ramp) ramp = vr_max(0.0, (cmax - *c) / k);
     dist = covered(*c, k, ramp);
     if (*room <= dist) return 2.0 * *room / (*c + sqrt(*c * *c + 2.0 * k * *room));
     *room -= dist;
@@ -133,10 +133,10 @@ typedef struct vrClosing {
  * most |da| until t1, at most the larger acceleration after */
 static double key_any_direction(const vrClosing *k, const vrBody *a, const vrBody *b)
 {
-    double cmax = k->cmax + k->spin, room = k->room, c = fmin(vec3_len(k->dv) + k->spin, cmax), tau;
+    double cmax = k->cmax + k->spin, room = k->room, c = vr_min(vec3_len(k->dv) + k->spin, cmax), tau;
     tau = cover(&room, &c, vec3_len(k->da), k->t1, cmax);
     if (tau == INFINITY && k->t1 < INFINITY) {
-        tau = cover(&room, &c, fmax(vec3_len(a->m.a), vec3_len(b->m.a)), INFINITY, cmax);
+        tau = cover(&room, &c, vr_max(vec3_len(a->m.a), vec3_len(b->m.a)), INFINITY, cmax);
         if (tau < INFINITY) tau += k->t1;
     }
     return tau;
@@ -164,7 +164,7 @@ static double key_along_normal(const vrClosing *k, vec3 n, const vrBody *a, cons
 static double key_for(const vrClosing *k, vec3 n, const vrBody *a, const vrBody *b)
 {
     if (k->room <= 0) return 0;
-    return fmax(key_any_direction(k, a, b), key_along_normal(k, n, a, b));
+    return vr_max(key_any_direction(k, a, b), key_along_normal(k, n, a, b));
 }
 
 /* when b's speed cap could bend its path after t (INFINITY: never) */
@@ -183,7 +183,7 @@ static double key_by_vertices(vrBody *a, vrBody *b, double t, vec3 n, double d)
 {
     vrPose pa, pb;
     vrDistBound db;
-    double until = fmin(t + KEY_HORIZON, fmin(cap_time(a, t), cap_time(b, t)));
+    double until = vr_min(t + KEY_HORIZON, vr_min(cap_time(a, t), cap_time(b, t)));
     vrBody_ShapePose(a, t, &pa);
     vrBody_ShapePose(b, t, &pb);
     vrDistBound_MakeAlong(&db, a, &pa, b, &pb, t, n, t, until);
@@ -204,7 +204,7 @@ static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d,
     /* until either body reaches the speed cap the relative acceleration is
      * exactly a_b - a_a (0 between two free bodies under the same force) */
     whole.da = vec3_sub(b->m.a, a->m.a);
-    whole.t1 = fmin(cap_left(a, t), cap_left(b, t));
+    whole.t1 = vr_min(cap_left(a, t), cap_left(b, t));
     /* turning bodies: the thesis takes (R - r) off the distance at once;
      * turning at omega also cannot close faster than omega R.  Each bound
      * holds, so the later time does. */
@@ -213,7 +213,7 @@ static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d,
     rate = whole;
     whole.room -= spin_margin(a) + spin_margin(b);
     rate.spin = spin_rate(a) + spin_rate(b);
-    return fmax(t + fmax(key_for(&whole, n, a, b), key_for(&rate, n, a, b)), key_by_vertices(a, b, t, n, d));
+    return vr_max(t + vr_max(key_for(&whole, n, a, b), key_for(&rate, n, a, b)), key_by_vertices(a, b, t, n, d));
 }
 
 double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)

@@ -16,6 +16,11 @@ typedef struct vec3 { double x, y, z; } vec3;
 typedef struct quat { double w, x, y, z; } quat;       /* unit: rotation */
 typedef struct mat33 { double m[3][3]; } mat33;         /* row-major */
 
+/* the smaller and larger of two numbers that are not NaN: libm's fmin and
+ * fmax are calls (they must handle NaN), these inline */
+static inline double vr_min(double a, double b) { return a < b ? a : b; }
+static inline double vr_max(double a, double b) { return a > b ? a : b; }
+
 /* ---- vectors ---------------------------------------------------------- */
 static inline vec3 vec3_make(double x, double y, double z) { vec3 r = {x, y, z}; return r; }
 static inline vec3 vec3_zero(void) { vec3 r = {0, 0, 0}; return r; }
