@@ -232,6 +232,15 @@ int vrOwner_BodyCount(const vrOwner *o) { return o->nheld; }
 static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPose *pb, vrContact *c);
 static void settle(vrOwner *o, int pi, int inside, double key);
 
+/* the pair's key after a look that found it dist apart along n; only the
+ * heap reads keys, so heap = 0 (the thesis's ablation) does not pay for
+ * them (a change of settings re-evaluates every pair) */
+static double pair_key(const vrOwner *o, const vrPair *p, double t, double dist, vec3 n)
+{
+    if (!o->p.use_heap) return t;
+    return vrSchedule_Key(o->body[p->a], o->body[p->b], t, dist, n, o->p.d, &o->p.flight);
+}
+
 /* A pair's state at a frame boundary is a pure function of the poses: every
  * pair is evaluated at the last grid point of a frame (or, with the heap,
  * provably outside there), so inside = distance <= d at that time.  A
@@ -270,7 +279,7 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
         query(o, p, t, 0, &pa, &pb, &c);
         inside = c.dist <= o->p.d;
         p->t_check = t;
-        settle(o, o->npair - 1, inside, inside ? t : vrSchedule_Key(o->body[a], o->body[b], t, c.dist, c.n, o->p.d, &o->p.flight));
+        settle(o, o->npair - 1, inside, inside ? t : pair_key(o, &o->pair[o->npair - 1], t, c.dist, c.n));
     }
     return 0;
 }
@@ -895,7 +904,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     p->t_check = t;
     if (c.dist > o->p.d) {
         int was_inside = p->inside;
-        settle(o, pi, 0, vrSchedule_Key(o->body[p->a], o->body[p->b], t, c.dist, c.n, o->p.d, &o->p.flight));
+        settle(o, pi, 0, pair_key(o, p, t, c.dist, c.n));
         return was_inside || t == t_prev ? lost_support(o, ev, t, p, &c) : 0;
     }
     if (!p->inside && t > t_prev && impact(o, ev, p, bisect(o, p, t_prev, t, &c))) {
