@@ -58,6 +58,7 @@ static int side_make(vrBoundSide *s, vrBody *b, const vrPose *pose, vec3 out, co
     s->w_len = s->jerk = 0;
     s->r_out = b->r_out;
     s->nv = 0;
+    if (b->shape.kind != VR_SHAPE_SPHERE && !b->shape.poly) return 0;   /* nothing to bound */
     if (vrBody_IsFree(b)) {                              /* else static or resting: frozen */
         double cap = b->m.t0 + b->m.tcap;
         /* the speed cap must not bend the path inside the window: it comes
