@@ -116,18 +116,25 @@ void vrDistBound_Make(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrBody *
     db->valid = 1;
 }
 
+/* the highest of n lines g + s tau at tau */
+static double highest_line(const double *g, const double *s, int n, double tau)
+{
+    double top = -INFINITY;
+    int i;
+    for (i = 0; i < n; i++) {
+        double h = g[i] + s[i] * tau;
+        if (h > top) top = h;
+    }
+    return top;
+}
+
 /* how much higher the side's support along its outward direction can be at tau */
 static double rise(const vrBoundSide *s, double tau)
 {
-    double turn = 0.5 * s->w_len * s->w_len * s->r_out * tau * tau, lin = -INFINITY;
-    int i;
+    double turn = 0.5 * s->w_len * s->w_len * s->r_out * tau * tau;
     if (s->w_len == 0) return 0;
     if (s->nv < 0) return vr_min(s->w_len * s->r_out * fabs(tau) + turn, s->headroom);
-    for (i = 0; i < s->nv; i++) {
-        double h = s->g[i] + s->s[i] * tau;
-        if (h > lin) lin = h;
-    }
-    return vr_min(lin + turn, s->headroom);
+    return vr_min(highest_line(s->g, s->s, s->nv, tau) + turn, s->headroom);
 }
 
 static double lower_at(const vrDistBound *db, double tau)
@@ -137,8 +144,8 @@ static double lower_at(const vrDistBound *db, double tau)
 }
 
 /* A side looking forward only (tau >= 0): the lines that can be the
- * highest there,
- * the turn term's coefficient, the steepest rise rate, and the cap. */
+ * highest there, the turn term's coefficient, the steepest rise rate, and
+ * the cap. */
 typedef struct vrAhead {
     int n;                   /* -1: |omega| R tau */
     double g[VR_DISTBOUND_VERTS], s[VR_DISTBOUND_VERTS];
@@ -171,17 +178,12 @@ static void ahead_of(const vrBoundSide *side, vrAhead *f)
     }
 }
 
-static double ahead_rise(const vrAhead *f, double tau, double w_r)
+/* rise() for tau >= 0 over the lines kept (steepest is |omega| R when n < 0) */
+static double ahead_rise(const vrAhead *f, double tau)
 {
-    double top = -INFINITY;
-    int i;
-    if (f->n < 0) return vr_min(w_r * tau + f->turn * tau * tau, f->headroom);
+    if (f->n < 0) return vr_min(f->steepest * tau + f->turn * tau * tau, f->headroom);
     if (f->n == 0) return 0;
-    for (i = 0; i < f->n; i++) {
-        double h = f->g[i] + f->s[i] * tau;
-        if (h > top) top = h;
-    }
-    return vr_min(top + f->turn * tau * tau, f->headroom);
+    return vr_min(highest_line(f->g, f->s, f->n, tau) + f->turn * tau * tau, f->headroom);
 }
 
 /* Conservative advancement on the lower bound: from tau, whose bound is y
@@ -201,7 +203,7 @@ double vrDistBound_Clear(const vrDistBound *db, double d, double until)
     c1 = fabs(accel) + 2 * (fa.turn + fb.turn);
     for (it = 0; it < 8; it++) {
         double y = db->gap_n + closing * tau + 0.5 * accel * tau * tau - d
-                 - ahead_rise(&fa, tau, fa.steepest) - ahead_rise(&fb, tau, fb.steepest);
+                 - ahead_rise(&fa, tau) - ahead_rise(&fb, tau);
         double b1 = c0 + c1 * tau, step;
         if (!(y > 0)) break;
         step = c1 > 0 ? 2 * y / (b1 + sqrt(b1 * b1 + 2 * c1 * y)) : b1 > 0 ? y / b1 : INFINITY;

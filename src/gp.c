@@ -539,6 +539,11 @@ static void event_query(vrOwner *o, vrPair *p, double t, vrPose *pa, vrPose *pb,
     for_events(o, p, t, pa, pb, c);
 }
 
+/* how far from d the distance bounds must be to decide a halving: a
+ * thousand times what they and the measured distance differ by in the
+ * tests (below 1e-15 m) */
+#define BOUND_TOL 1e-12
+
 /* the bisection's test: is the pair within d at t?  When what was measured
  * can bound the distance nearby (a gap and closest points), *near gets
  * those bounds for times in [lo, hi]. */
@@ -555,7 +560,7 @@ static int within_d(vrOwner *o, vrPair *p, double t, double lo, double hi, vrDis
     near->valid = 0;
     /* bounds from a measurement within a few tolerances of d cannot decide
      * anything beside it: not worth making */
-    if (seen.dist > 0 && fabs(seen.dist - o->p.d) > 4e-12)
+    if (seen.dist > 0 && fabs(seen.dist - o->p.d) > 4 * BOUND_TOL)
         vrDistBound_Make(near, A, &pa, B, &pb, t, seen.pa, seen.pb, 1, lo, hi);
     return in;
 }
@@ -565,7 +570,7 @@ static int decided(const vrOwner *o, const vrDistBound near[2], double t)
 {
     int k, say;
     for (k = 0; k < 2; k++)
-        if ((say = vrDistBound_Decide(&near[k], t, o->p.d, 1e-12)) >= 0) return say;
+        if ((say = vrDistBound_Decide(&near[k], t, o->p.d, BOUND_TOL)) >= 0) return say;
     return -1;
 }
 
@@ -816,7 +821,7 @@ static int clear_by_walk(vrOwner *o, int pi, double t)
     o->checks++;
     if (dist <= o->p.d + VR_QUICK_TOL) return 0;
     p->t_check = t;
-    settle(o, pi, 0, vrSchedule_Key(A, B, t, dist - VR_QUICK_TOL, n, o->p.d, &o->p.flight));
+    settle(o, pi, 0, pair_key(o, p, t, dist - VR_QUICK_TOL, n));
     return 1;
 }
 
