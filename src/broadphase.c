@@ -10,12 +10,16 @@ void vrBroad_Init(vrBroadphase *bp)
     memset(bp, 0, sizeof *bp);
     bp->t0 = bp->T = NAN;     /* no frame yet: no boxes */
     bp->stale = 1;
+    bp->near_frame = -1;
 }
 
 void vrBroad_Free(vrBroadphase *bp)
 {
     free(bp->box);
     free(bp->sweep);
+    free(bp->near);
+    free(bp->pos);
+    free(bp->odd);
     vrPairMap_Free(&bp->map);
     vrBroad_Init(bp);
 }
@@ -35,6 +39,7 @@ void vrBroad_BodyChanged(vrBroadphase *bp, int id)
 {
     if (id < bp->cap) bp->box[id].frame = -1;
     bp->stale = 1;
+    bp->near_frame = -1;
 }
 
 void vrBroad_SetEnvelope(vrBroadphase *bp, double d)
@@ -42,6 +47,7 @@ void vrBroad_SetEnvelope(vrBroadphase *bp, double d)
     int i;
     bp->d = d;
     bp->T = NAN;
+    bp->near_frame = -1;
     for (i = 0; i < bp->cap; i++) bp->box[i].frame = -1;
 }
 
@@ -62,7 +68,7 @@ static void static_extent(vrBody *b, vec3 *lo, vec3 *hi)
 
 /* a moving body's box over [its anchor or the span start, the frame's end];
  * a static body's wherever it is */
-void vrBroad_Rebox(vrBroadphase *bp, vrBody *const *body, int id)
+static void make_box(vrBroadphase *bp, vrBody *const *body, int id)
 {
     vrBody *b = body[id];
     vrBox *x = &bp->box[id];
@@ -85,6 +91,41 @@ void vrBroad_Rebox(vrBroadphase *bp, vrBody *const *body, int id)
     x->lo = vec3_sub(x->lo, vec3_make(pad, pad, pad));
     x->hi = vec3_add(x->hi, vec3_make(pad, pad, pad));
     x->valid = 1;
+}
+
+static double near_key(const vrBroadphase *bp, int i) { return bp->box[bp->near[i]].lo.x; }
+
+static void near_put(vrBroadphase *bp, int i, int id)
+{
+    bp->near[i] = id;
+    bp->pos[id] = i;
+}
+
+/* a moving body's box changed within the frame: it moves to its place in
+ * near (a short way: an event changes a path a little), or, boxless now,
+ * to odd */
+static void near_moved(vrBroadphase *bp, int id)
+{
+    const vrBox *x = &bp->box[id];
+    int i = bp->pos[id];
+    if (!x->valid) {
+        for (; i + 1 < bp->nnear; i++) near_put(bp, i, bp->near[i + 1]);
+        bp->nnear--;
+        bp->pos[id] = -1;
+        if (vrGrow((void **)&bp->odd, &bp->oddcap, bp->nodd + 1, sizeof *bp->odd) != 0) bp->near_frame = -1;
+        else bp->odd[bp->nodd++] = id;
+        return;
+    }
+    bp->widest = fmax(bp->widest, x->hi.x - x->lo.x);
+    for (; i > 0 && near_key(bp, i - 1) > x->lo.x; i--) near_put(bp, i, bp->near[i - 1]);
+    for (; i + 1 < bp->nnear && near_key(bp, i + 1) < x->lo.x; i++) near_put(bp, i, bp->near[i + 1]);
+    near_put(bp, i, id);
+}
+
+void vrBroad_Rebox(vrBroadphase *bp, vrBody *const *body, int id)
+{
+    make_box(bp, body, id);
+    if (bp->near_frame == bp->frame && id < bp->poscap && bp->pos[id] >= 0) near_moved(bp, id);
 }
 
 /* the sweep's order: lower x of the box, then id (invalid boxes first) */
@@ -116,6 +157,54 @@ static int remake_sweep(vrBroadphase *bp, vrBody *const *body, int nbody)
     return 0;
 }
 
+/* near and odd from the sorted sweep list; without memory, no list */
+static void make_near(vrBroadphase *bp)
+{
+    int i;
+    bp->near_frame = -1;
+    if (vrGrow((void **)&bp->near, &bp->nearcap, bp->nsweep, sizeof *bp->near) != 0
+        || vrGrow((void **)&bp->odd, &bp->oddcap, bp->nsweep, sizeof *bp->odd) != 0
+        || vrGrow((void **)&bp->pos, &bp->poscap, bp->cap, sizeof *bp->pos) != 0)
+        return;
+    for (i = 0; i < bp->poscap; i++) bp->pos[i] = -1;
+    bp->nnear = bp->nodd = 0;
+    bp->widest = 0;
+    for (i = 0; i < bp->nsweep; i++) {
+        int id = bp->sweep[i];
+        const vrBox *x = &bp->box[id];
+        if (!x->valid || x->frame == VR_BOX_FOR_GOOD) {
+            bp->odd[bp->nodd++] = id;
+            continue;
+        }
+        near_put(bp, bp->nnear++, id);
+        bp->widest = fmax(bp->widest, x->hi.x - x->lo.x);
+    }
+    bp->near_frame = bp->frame;
+}
+
+int vrBroad_Meeting(const vrBroadphase *bp, int id, void (*meet)(void *ctx, int y), void *ctx)
+{
+    const vrBox *x = &bp->box[id];
+    int lo = 0, hi = bp->nnear, i;
+    if (bp->near_frame != bp->frame) return -1;
+    for (i = 0; i < bp->nodd; i++)
+        if (bp->odd[i] != id && !vrBroad_Apart(x, &bp->box[bp->odd[i]])) meet(ctx, bp->odd[i]);
+    if (!x->valid) {         /* meets everything */
+        for (i = 0; i < bp->nnear; i++)
+            if (bp->near[i] != id) meet(ctx, bp->near[i]);
+        return 0;
+    }
+    /* the first box that could reach x: its lower x at most widest below x's */
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (near_key(bp, mid) < x->lo.x - bp->widest) lo = mid + 1;
+        else hi = mid;
+    }
+    for (i = lo; i < bp->nnear && near_key(bp, i) <= x->hi.x; i++)
+        if (bp->near[i] != id && !vrBox_Disjoint(x, &bp->box[bp->near[i]])) meet(ctx, bp->near[i]);
+    return 0;
+}
+
 int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0, double T,
                      void (*meet)(void *ctx, int x, int y), void (*boxless)(void *ctx, int id), void *ctx)
 {
@@ -127,6 +216,7 @@ int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0
     for (i = 0; i < bp->nsweep; i++)
         if (!vrBroad_Box(bp, body, bp->sweep[i])->valid) boxless(ctx, bp->sweep[i]);
     sort_sweep(bp);
+    make_near(bp);
     for (i = 0; i < bp->nsweep; i++) {
         const vrBox *a = &bp->box[bp->sweep[i]];
         if (!a->valid) continue;

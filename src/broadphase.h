@@ -8,7 +8,9 @@
  * come within d before the frame ends.  At a frame start the boxes are
  * sorted along x and swept, so the pairs that overlap come out without a
  * look at the (many more) pairs that stay apart; a pair map turns two
- * bodies into their pair.
+ * bodies into their pair.  Within a frame the moving bodies stay sorted
+ * as events rebox them, so that the bodies an event's box meets are found
+ * by a search, not by a look at every pair of the changed body.
  */
 #ifndef VROC_BROADPHASE_H
 #define VROC_BROADPHASE_H
@@ -29,6 +31,12 @@ typedef struct vrBroadphase {
     int *sweep;               /* the held bodies by their boxes' lower x, as of the last frame */
     int nsweep, sweepcap;
     int stale;                /* bodies came or went: the sweep list is made anew */
+    /* for vrBroad_Meeting, made at each frame start */
+    long long near_frame;     /* the frame they are for (-1: none, e.g. no memory) */
+    int *near, nnear, nearcap;/* moving bodies with a box, by their box's lower x */
+    int *pos, poscap;         /* by body id: its index in near, or -1 */
+    int *odd, nodd, oddcap;   /* the others: static (wide boxes) or boxless */
+    double widest;            /* no box in near is wider along x (within the frame) */
     vrPairMap map;
 } vrBroadphase;
 
@@ -72,6 +80,14 @@ static inline int vrBroad_Apart(const vrBox *a, const vrBox *b) { return a->vali
  * could meet. */
 int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0, double T,
                      void (*meet)(void *ctx, int x, int y), void (*boxless)(void *ctx, int id), void *ctx);
+
+/* Calls meet(ctx, y) for every held body y != id whose box may overlap
+ * id's (a superset: boxless bodies, and a few that do not, come too).
+ * Returns -1, calling nothing, when the current frame has no sorted list
+ * (bodies came or went since its start, or no memory): the caller must
+ * then look at every pair. */
+int vrBroad_Meeting(const vrBroadphase *bp, int id, void (*meet)(void *ctx, int y), void *ctx);
+static inline int vrBroad_CanMeet(const vrBroadphase *bp) { return bp->near_frame == bp->frame; }
 
 /* an empty map for at least n pairs (-1 and no map when out of memory) */
 int vrPairMap_Reset(vrPairMap *m, int n);

@@ -36,7 +36,7 @@ typedef struct vrPair {
 
 /* per pair, in a byte array an event can sweep without touching the pairs
  * themselves (a thousand bodies make half a million pairs) */
-enum { HOT_DORMANT = 1, HOT_INSIDE = 2 };
+enum { HOT_DORMANT = 1, HOT_INSIDE = 2, HOT_LISTED_A = 4, HOT_LISTED_B = 8 };
 
 /* what an evaluation changed, so Advance can take it back */
 typedef struct vrUndo {
@@ -55,6 +55,8 @@ struct vrOwner {
     vrBody **body;            /* by id, NULL when not held */
     vrIntList *body_pairs;    /* by id: indices of its pairs */
     vrIntList *body_partners; /* by id: the other body of each of those pairs */
+    vrIntList *body_awake;    /* by id: its pairs that may not be dormant (each listed once,
+                                 HOT_LISTED_A or _B; a dormant one may linger) */
     unsigned char *was_frozen; /* by id: frozen when its pairs were last scheduled (2: not yet) */
     unsigned char *hot;       /* by pair: HOT_* */
     vrBroadphase bp;          /* which pairs could meet in the rest of the frame; its t0 and T
@@ -75,6 +77,7 @@ struct vrOwner {
     int nfound, foundcap;
     vrResponder *responder;
     long long checks, heap_pops;
+    int awake_lost;           /* no memory to list a pair awake: events look at every pair */
     void (*progress)(void *ctx);
     void *progress_ctx;
 };
@@ -120,9 +123,11 @@ void vrOwner_Free(vrOwner *o)
     for (i = 0; i < o->bodycap; i++) {
         free(o->body_pairs[i].v);
         free(o->body_partners[i].v);
+        free(o->body_awake[i].v);
     }
     free(o->body_pairs);
     free(o->body_partners);
+    free(o->body_awake);
     free(o->was_frozen);
     free(o->hot);
     vrBroad_Free(&o->bp);
@@ -147,6 +152,15 @@ static void flag(vrOwner *o, int pi)
         o->pair[pi].flagged = 1;
         list_push(&o->flagged, pi);
     }
+}
+
+/* a pair that is not dormant is in both its bodies' awake lists */
+static void list_awake(vrOwner *o, int pi)
+{
+    unsigned char *h = &o->hot[pi];
+    if (!(*h & HOT_LISTED_A) && list_push(&o->body_awake[o->pair[pi].a], pi) == 0) *h |= HOT_LISTED_A;
+    if (!(*h & HOT_LISTED_B) && list_push(&o->body_awake[o->pair[pi].b], pi) == 0) *h |= HOT_LISTED_B;
+    if (!(*h & HOT_LISTED_A) || !(*h & HOT_LISTED_B)) o->awake_lost = 1;
 }
 
 static void deactivate(vrOwner *o, int pi)
@@ -208,6 +222,8 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
         if (vrGrow((void **)&o->body_pairs, &cap, id + 1, sizeof *o->body_pairs) != 0) return -1;
         cap = old;
         if (vrGrow((void **)&o->body_partners, &cap, id + 1, sizeof *o->body_partners) != 0) return -1;
+        cap = old;
+        if (vrGrow((void **)&o->body_awake, &cap, id + 1, sizeof *o->body_awake) != 0) return -1;
         if (vrBroad_Reserve(&o->bp, cap) != 0) return -1;
         cap = old;
         if (vrGrow((void **)&o->was_frozen, &cap, id + 1, sizeof *o->was_frozen) != 0) return -1;
@@ -218,6 +234,8 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
             o->body_pairs[i].v = NULL;
             o->body_partners[i].n = o->body_partners[i].cap = 0;
             o->body_partners[i].v = NULL;
+            o->body_awake[i].n = o->body_awake[i].cap = 0;
+            o->body_awake[i].v = NULL;
         }
         o->bodycap = cap;
     }
@@ -269,6 +287,7 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
     if (list_push(&o->body_pairs[a], o->npair) != 0 || list_push(&o->body_pairs[b], o->npair) != 0
         || list_push(&o->body_partners[a], b) != 0 || list_push(&o->body_partners[b], a) != 0) return -1;
     o->npair++;
+    list_awake(o, o->npair - 1);
     update_schedule(o, o->npair - 1);
     if (flagged) {
         flag(o, o->npair - 1);
@@ -297,7 +316,8 @@ static void reindex(vrOwner *o)
     o->active.n = 0;
     o->flagged.n = 0;
     vrPairMap_Reset(&o->bp.map, o->npair);   /* no memory: no map, see new_frame */
-    for (i = 0; i < o->bodycap; i++) o->body_pairs[i].n = o->body_partners[i].n = 0;
+    for (i = 0; i < o->bodycap; i++) o->body_pairs[i].n = o->body_partners[i].n = o->body_awake[i].n = 0;
+    o->awake_lost = 0;
     for (i = 0; i < o->npair; i++) {
         vrPair *p = &o->pair[i];
         list_push(&o->body_pairs[p->a], i);
@@ -305,6 +325,7 @@ static void reindex(vrOwner *o)
         list_push(&o->body_partners[p->a], p->b);
         list_push(&o->body_partners[p->b], p->a);
         o->hot[i] = p->inside ? HOT_INSIDE : 0;
+        list_awake(o, i);
         if (o->bp.map.cap) vrPairMap_Put(&o->bp.map, p->order, i);
         p->flagged = 0;
         p->active = -1;
@@ -370,6 +391,7 @@ static void wake(vrOwner *o, int pi)
 {
     if (!(o->hot[pi] & HOT_DORMANT)) return;
     o->hot[pi] &= (unsigned char)~HOT_DORMANT;
+    list_awake(o, pi);
     flag(o, pi);
 }
 
@@ -399,34 +421,80 @@ static void new_frame(vrOwner *o, const vrGrid *g)
         for (i = 0; i < o->npair; i++) wake(o, i);
 }
 
+/* body id changed: each key of its pairs was for the old motion, so a
+ * pair is evaluated anew, or dormant (apart from the other's box) */
+static void changed_pair(vrOwner *o, int pi, const vrBox *box, int id, int other)
+{
+    if (apart_from(o, pi, box, id, other)) {
+        make_dormant(o, pi);
+    } else {
+        o->hot[pi] &= (unsigned char)~HOT_DORMANT;
+        list_awake(o, pi);
+        flag(o, pi);
+    }
+}
+
+/* every pair of id, one by one */
+static void changed_all(vrOwner *o, int id, const vrBox *box)
+{
+    const vrIntList *l = &o->body_pairs[id], *partner = &o->body_partners[id];
+    int j;
+    for (j = 0; j < l->n; j++) changed_pair(o, l->v[j], box, id, partner->v[j]);
+}
+
+typedef struct vrChanged { vrOwner *o; int id; const vrBox *box; } vrChanged;
+
+/* a body whose box may meet the changed one's: their pair, if dormant and
+ * no longer apart, wakes (an awake one was seen in the awake list) */
+static void changed_meets(void *ctx, int y)
+{
+    vrChanged *c = ctx;
+    vrOwner *o = c->o;
+    int x = c->id, pi = vrPairMap_Find(&o->bp.map, x < y ? ((long long)x << 32) | y : ((long long)y << 32) | x);
+    if (pi >= 0 && (o->hot[pi] & HOT_DORMANT)) changed_pair(o, pi, c->box, x, y);
+}
+
+/* The same for a thousand bodies: a dormant pair stays dormant while the
+ * boxes are apart, so only the pairs awake and those of the bodies whose
+ * boxes meet the new one (a search in the broadphase's sorted list) are
+ * looked at.  A dormant pair lingering in the awake list leaves it. */
+static void changed_near(vrOwner *o, int id, const vrBox *box)
+{
+    vrIntList *l = &o->body_awake[id];
+    vrChanged c;
+    int j = 0;
+    while (j < l->n) {
+        int pi = l->v[j], other = o->pair[pi].a == id ? o->pair[pi].b : o->pair[pi].a;
+        if (!(o->hot[pi] & HOT_DORMANT)) changed_pair(o, pi, box, id, other);
+        if (o->hot[pi] & HOT_DORMANT) {
+            o->hot[pi] &= (unsigned char)~(o->pair[pi].a == id ? HOT_LISTED_A : HOT_LISTED_B);
+            l->v[j] = l->v[--l->n];
+        } else {
+            j++;
+        }
+    }
+    c.o = o, c.id = id, c.box = box;
+    vrBroad_Meeting(&o->bp, id, changed_meets, &c);
+}
+
 void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
 {
-    int i, j, k = 0;
+    int i, j, k = 0, near;
     for (i = 0; i < n; i++)
         if (ids[i] < o->bodycap && o->body[ids[i]]) vrBroad_Rebox(&o->bp, o->body, ids[i]);
+    near = o->bp.map.cap && !o->awake_lost && vrBroad_CanMeet(&o->bp);
     for (i = 0; i < n; i++) {
         int id = ids[i], now_frozen;
-        const vrIntList *l, *partner;
         const vrBox *box;
         if (id >= o->bodycap || !o->body[id]) continue;
-        l = &o->body_pairs[id];
-        partner = &o->body_partners[id];
         /* a pair's scheduling only changes when a body freezes or thaws */
         now_frozen = frozen(o->body[id]);
         if (o->was_frozen[id] != now_frozen)
-            for (j = 0; j < l->n; j++) update_schedule(o, l->v[j]);
+            for (j = 0; j < o->body_pairs[id].n; j++) update_schedule(o, o->body_pairs[id].v[j]);
         o->was_frozen[id] = (unsigned char)now_frozen;
-        /* each key was for the old motion: the pair is evaluated, or dormant */
         box = vrBroad_Box(&o->bp, o->body, id);
-        for (j = 0; j < l->n; j++) {
-            int pi = l->v[j];
-            if (apart_from(o, pi, box, id, partner->v[j])) {
-                make_dormant(o, pi);
-            } else {
-                o->hot[pi] &= (unsigned char)~HOT_DORMANT;
-                flag(o, pi);
-            }
-        }
+        if (near) changed_near(o, id, box);
+        else changed_all(o, id, box);
     }
     for (i = 0; i < o->npending; i++)
         if (!event_involves(&o->pending[i], ids, n)) o->pending[k++] = o->pending[i];
@@ -438,7 +506,8 @@ void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
 /* a pair's status and key after an evaluation, and where it waits */
 static void settle(vrOwner *o, int pi, int inside, double key)
 {
-    o->hot[pi] = (unsigned char)(inside ? HOT_INSIDE : 0);
+    o->hot[pi] = (unsigned char)((o->hot[pi] & (HOT_LISTED_A | HOT_LISTED_B)) | (inside ? HOT_INSIDE : 0));
+    list_awake(o, pi);
     o->pair[pi].inside = inside;
     o->pair[pi].key = key;
     place(o, pi);

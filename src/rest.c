@@ -36,6 +36,7 @@ static int rests_on(const vrBody *b, int partner)
 int vrRest_WakeDependents(vrWorld *w, vrUpdate *up, double t)
 {
     int k, i;
+    if (w->may_rest == 0) return 0;     /* nothing rests: no look at every object */
     for (k = 0; k < up->n; k++) {
         int id = up->body[k].id;
         for (i = 0; i < w->nobj; i++) {
@@ -84,6 +85,7 @@ int vrRest_FrameEnd(vrWorld *w, vrUpdate *up)
             st = vrUpdate_Body(up, &o->body, w->t);
             if (!st) return -1;
             st->resting = 1;
+            w->may_rest = w->nobj;      /* counted again once applied */
             more = 1;
         }
     }
@@ -93,9 +95,11 @@ int vrRest_FrameEnd(vrWorld *w, vrUpdate *up)
 void vrRest_RememberFramePoses(vrWorld *w)
 {
     int i;
+    w->may_rest = 0;
     for (i = 0; i < w->nobj; i++) {
         vrObject *o = w->obj[i];
         if (!o || !o->live || o->body.is_static) continue;
+        w->may_rest += o->body.resting;
         vrBody_Pose(&o->body, w->t, &o->frame_pose);
         o->have_frame_pose = 1;
         o->body.hit = 0;

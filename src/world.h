@@ -44,6 +44,8 @@ struct vrWorld {
     struct vrSgp *sgp;       /* parallel: the workers (parallel/sgp.c) */
     vrUpdate pending;        /* states changed since the owners last heard */
     vrOwnerStats retired;    /* statistics of owners that are gone */
+    int may_rest;            /* resting bodies, or more: 0 means none (rest begins only at
+                                frame ends, where they are counted) */
     vrBody **dyn;            /* live dynamic bodies, for the grid */
     int ndyn, dyncap;
     vrUpdate update;

@@ -511,6 +511,35 @@ static int test_plank_across_two_blocks_rests_on_both(void)
     return 0;
 }
 
+/* A ball resting on a block resting on a table: a second ball knocks the
+ * block away; the response wakes the block and what rests on it (SPEC
+ * 3.5), and the ball drops onto the table instead of hanging where the
+ * block was (frictionless: only the block's passing edge pushes it, back
+ * against the block's motion, by less than its radius). */
+static int test_ball_on_a_knocked_block_wakes_and_falls(void)
+{
+    vrWorld *w = new_world(0.05, 0.005, 9.8);
+    vrObjectId block, ball;
+    vrObjectState s;
+    int f;
+    box(w, "table", vec3_make(2, 2, 0.05), vec3_make(0, 0, 0), -1, 1);
+    block = box(w, "block", vec3_make(0.2, 0.2, 0.1), vec3_make(0, 0, 0.153), 1, 0.3);
+    ball = sphere(w, "ball", 0.1, vec3_make(0, 0, 0.356), vec3_zero(), 1, 0.3);
+    for (f = 0; f < 100 && !vrWorld_AllAtRest(w); f++) ENSURE(step(w, 1) == 0);
+    ENSURE_MSG(vrWorld_AllAtRest(w), "not at rest after %d frames", f);
+    ENSURE(state(w, ball).position[2] > 0.35);
+    sphere(w, "striker", 0.05, vec3_make(-0.5, 0, 0.15), vec3_make(3, 0, 0), 1, 1);
+    ENSURE(step(w, 3) == 0);
+    ENSURE_MSG(state(w, block).linear_vel[0] > 1, "block vx %g", state(w, block).linear_vel[0]);
+    ENSURE(state(w, ball).state != VR_STATE_REST);
+    ENSURE(step(w, 20) == 0);
+    s = state(w, ball);
+    ENSURE_MSG(s.position[2] > 0.15 - 1e-9 && s.position[2] < 0.155 + 1e-6, "ball z %g", s.position[2]);
+    ENSURE_MSG(s.position[0] <= 0 && s.position[0] > -0.1, "ball x %g", s.position[0]);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
 /* ---- flush surfaces ------------------------------------------------------------------------ */
 
 static void set_velocity(vrObjectDef *d, const void *arg)
@@ -844,6 +873,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_box_on_edge_tips_over_and_lies_flat);
     RUN_TEST(test_balls_and_box_come_to_rest_without_jitter);
     RUN_TEST(test_plank_across_two_blocks_rests_on_both);
+    RUN_TEST(test_ball_on_a_knocked_block_wakes_and_falls);
     RUN_TEST(test_sliding_over_flush_tables_feels_no_seam);
     RUN_TEST(test_a_real_step_still_stops_a_sliding_box);
     RUN_TEST(test_settled_box_keeps_no_rocking_spin);
