@@ -7,11 +7,16 @@
 /* what the key leaves on the table for rounding in distances and poses */
 #define KEY_MARGIN 1e-9
 
-void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, double d,
-                     double internal_step, const vrFlight *f, vrGrid *g)
+double vrSchedule_Reach(const vrBody *b, double ts, double T, const vrFlight *f)
 {
-    double span = T - ts, fastest = 0, accel = vec3_len(f->accel);
-    int i;
+    if (!b || !vrBody_IsFree(b)) return 0;
+    return vrBody_SpeedBound(b, ts, T - ts, vec3_len(f->accel), f->max_linear)
+         + vrBody_SpinBound(b) * (b->shape.kind == VR_SHAPE_SPHERE ? 0.0 : b->r_out);
+}
+
+void vrSchedule_GridFor(double fastest, double ts, double T, double d, double internal_step, vrGrid *g)
+{
+    double span = T - ts;
     g->t0 = ts;
     g->T = T;
     if (span <= 0) {          /* an event at the frame end: nothing left to step */
@@ -25,14 +30,6 @@ void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, do
         g->h = internal_step;
         return;
     }
-    for (i = 0; i < nbodies; i++) {
-        const vrBody *b = bodies[i];
-        double reach;
-        if (!b || !vrBody_IsFree(b)) continue;
-        reach = vrBody_SpeedBound(b, ts, span, accel, f->max_linear)
-              + vrBody_SpinBound(b) * (b->shape.kind == VR_SHAPE_SPHERE ? 0.0 : b->r_out);
-        if (reach > fastest) fastest = reach;
-    }
     g->n = 1;
     if (fastest > 0) {
         /* never finer than the clock can tell apart */
@@ -40,6 +37,15 @@ void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, do
         g->n = steps > 1 ? (long)vr_min(steps, finest) : 1;
     }
     g->h = span / (double)g->n;
+}
+
+void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, double d,
+                     double internal_step, const vrFlight *f, vrGrid *g)
+{
+    double fastest = 0;
+    int i;
+    for (i = 0; i < nbodies && internal_step <= 0 && T > ts; i++) fastest = vr_max(fastest, vrSchedule_Reach(bodies[i], ts, T, f));
+    vrSchedule_GridFor(fastest, ts, T, d, internal_step, g);
 }
 
 long vrSchedule_FirstPointAtOrAfter(const vrGrid *g, double t)

@@ -17,6 +17,10 @@ static inline double vrGrid_Point(const vrGrid *g, long k)
  * internal_step > 0 forces h */
 void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, double d,
                      double internal_step, const vrFlight *f, vrGrid *g);
+/* a body's s_i + w_i R_i for the span [ts, T] (0 when not free) */
+double vrSchedule_Reach(const vrBody *b, double ts, double T, const vrFlight *f);
+/* the grid of [ts, T] given the largest reach over the free bodies */
+void vrSchedule_GridFor(double fastest, double ts, double T, double d, double internal_step, vrGrid *g);
 /* the first k >= 1 whose grid point is at or after time t (n + 1 if none) */
 long vrSchedule_FirstPointAtOrAfter(const vrGrid *g, double t);
 

@@ -190,6 +190,8 @@ void vrWorld_Destroy(vrWorld *w)
     vrSgp_Free(w->sgp);
     free(w->obj);
     free(w->dyn);
+    free(w->dyn_slot);
+    vrReach_Free(&w->reach);
     free(w->changed);
     vrUpdate_Free(&w->update);
     vrUpdate_Free(&w->pending);
@@ -584,10 +586,15 @@ static int rebuild_dynamic_list(vrWorld *w)
 {
     int i;
     w->ndyn = 0;
+    w->ndyn_slot = 0;
+    if (vrGrow((void **)&w->dyn_slot, &w->dyn_slotcap, w->nobj, sizeof *w->dyn_slot) != 0) return -1;
+    w->ndyn_slot = w->nobj;
     for (i = 0; i < w->nobj; i++) {
         vrObject *o = w->obj[i];
+        w->dyn_slot[i] = -1;
         if (!o || !o->live || o->body.is_static) continue;
         if (vrGrow((void **)&w->dyn, &w->dyncap, w->ndyn + 1, sizeof *w->dyn) != 0) return -1;
+        w->dyn_slot[i] = w->ndyn;
         w->dyn[w->ndyn++] = &o->body;
     }
     return 0;
@@ -914,6 +921,25 @@ int vrWorld_DeleteObject(vrWorld *w, vrObjectId id)
 
 /* ---- the frame loop -------------------------------------------------------------------- */
 
+/* the grid of the span [ts, T] (SPEC 3.2) */
+static void span_grid(const vrWorld *w, double ts, double T, const vrParams *p, vrGrid *g)
+{
+    if (!w->reach.valid || !(w->reach.T == T) || w->reach.n != w->ndyn) {
+        vrSchedule_Grid(w->dyn, w->ndyn, ts, T, p->d, w->s.internal_step, &p->flight, g);
+        return;
+    }
+    vrSchedule_GridFor(w->s.internal_step > 0 || !(T > ts) ? 0 : vrReach_Fastest(&w->reach, w->dyn, ts, &p->flight),
+                       ts, T, p->d, w->s.internal_step, g);
+}
+
+/* the bodies an event changed have new reach bounds */
+static void reach_changed(vrWorld *w, const vrUpdate *up, const vrParams *p)
+{
+    int k;
+    for (k = 0; k < up->n; k++)
+        if (up->body[k].id < w->ndyn_slot) vrReach_Changed(&w->reach, w->dyn, w->dyn_slot[up->body[k].id], up->body[k].t, &p->flight);
+}
+
 /* Runs [t, t + time_step]: ARCHITECTURE "the loop, once". */
 static int run_frame(vrWorld *w, char *err, size_t n)
 {
@@ -921,11 +947,12 @@ static int run_frame(vrWorld *w, char *err, size_t n)
     vrParams p = vrWorld_Params(w);
     int instant = 0;
     w->subframes = 0;
+    vrReach_Frame(&w->reach, w->dyn, w->ndyn, ts, T, &p.flight);
     for (;;) {
         vrGrid g;
         vrEvent ev;
         int r;
-        vrSchedule_Grid(w->dyn, w->ndyn, ts, T, p.d, w->s.internal_step, &p.flight, &g);
+        span_grid(w, ts, T, &p, &g);
         r = owners(w)->first_event(w, &g, instant < VR_INSTANT_MAX, &ev, err, n);
         if (r == VR_RESTART_FRAME) goto restart;
         if (r < 0) return -1;
@@ -945,12 +972,14 @@ static int run_frame(vrWorld *w, char *err, size_t n)
         if (r != 0) return -1;
         if (ev.kind == VR_EV_IMPACT || ev.kind == VR_EV_CONTACT) w->collisions++;
         if (vrWorld_ApplyUpdate(w, &w->update) != 0) return fail_msg(err, n, "out of memory");
+        reach_changed(w, &w->update, &p);
         instant = ev.t == instant_t ? instant + 1 : 1;
         instant_t = ev.t;
         ts = ev.t;
         continue;
     restart:                 /* a worker died: the frame again from its start */
         ts = w->t;
+        vrReach_Frame(&w->reach, w->dyn, w->ndyn, ts, T, &p.flight);
         instant = 0;
         instant_t = -INFINITY;
         w->subframes = 0;

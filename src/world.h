@@ -6,6 +6,7 @@
 
 #include "vroc.h"
 #include "gp.h"
+#include "reach.h"
 
 typedef struct vrSgp vrSgp;
 
@@ -48,6 +49,9 @@ struct vrWorld {
                                 frame ends, where they are counted) */
     vrBody **dyn;            /* live dynamic bodies, for the grid */
     int ndyn, dyncap;
+    int *dyn_slot;           /* by object id below ndyn_slot: its index in dyn, or -1 */
+    int ndyn_slot, dyn_slotcap;
+    vrReach reach;           /* the grid's largest reach, from bounds on dyn */
     vrUpdate update;
     int *changed;            /* scratch: ids changed by an update */
     int nchanged, changedcap;
