@@ -67,7 +67,7 @@ struct vrOwner {
     int npair, paircap;
     vrHeap heap;
     vrIntList active;         /* inside pairs: due at every grid point, kept out of the heap */
-    vrIntList flagged, due;
+    vrIntList flagged, due, due_inside;  /* due at a grid point: outside the envelope, inside */
     vrUndo *undo;
     int nundo, undocap;
     vrEvent *pending;         /* events found at pending_t not yet taken */
@@ -137,6 +137,7 @@ void vrOwner_Free(vrOwner *o)
     free(o->active.v);
     free(o->flagged.v);
     free(o->due.v);
+    free(o->due_inside.v);
     free(o->undo);
     free(o->pending);
     free(o->found);
@@ -1069,22 +1070,31 @@ static void collect_due(vrOwner *o, double t)
 {
     double key;
     int id;
-    o->due.n = 0;
+    o->due.n = o->due_inside.n = 0;
     if (!o->p.use_heap) {
         for (id = 0; id < o->npair; id++)
-            if (o->pair[id].scheduled) list_push(&o->due, id);
+            if (o->pair[id].scheduled) list_push(o->pair[id].inside ? &o->due_inside : &o->due, id);
         return;
     }
     /* the order pairs are evaluated in at one grid point does not matter:
      * they do not touch each other, and events are sorted afterwards */
     for (id = 0; id < o->active.n; id++)
-        if (!(o->pair[o->active.v[id]].quiet_until >= t)) list_push(&o->due, o->active.v[id]);
+        if (!(o->pair[o->active.v[id]].quiet_until >= t)) list_push(&o->due_inside, o->active.v[id]);
     while ((id = vrHeap_Top(&o->heap, &key)) >= 0 && key <= t) {
         vrHeap_Pop(&o->heap);
         o->heap_pops++;
         if (!(o->hot[id] & HOT_DORMANT) && pair_apart(o, id)) make_dormant(o, id);
         if (!(o->hot[id] & HOT_DORMANT)) list_push(&o->due, id);
     }
+}
+
+/* an event found so far comes before t */
+static int impact_before(const vrOwner *o, double t)
+{
+    int i;
+    for (i = 0; i < o->nfound; i++)
+        if (o->found[i].t < t) return 1;
+    return 0;
 }
 
 int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *ev)
@@ -1100,6 +1110,11 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
         double t = vrGrid_Point(g, k), key;
         collect_due(o, t);
         for (i = 0; i < o->due.n; i++) evaluate_into_found(o, o->due.v[i], t, vrGrid_Point(g, k - 1), 1);
+        /* A pair inside the envelope has its events at grid points only:
+         * after an impact bisected to before t they could only be rolled
+         * back (in a heap of bodies, most of the look-ahead's work) */
+        if (!impact_before(o, t))
+            for (i = 0; i < o->due_inside.n; i++) evaluate_into_found(o, o->due_inside.v[i], t, vrGrid_Point(g, k - 1), 1);
         if (o->nfound) return take_first(o, t, ev);
         if (!o->p.use_heap || o->active.n > 0) { k++; continue; }
         if (vrHeap_Top(&o->heap, &key) < 0) break;
