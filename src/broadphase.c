@@ -222,6 +222,9 @@ int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0
         if (!a->valid) continue;
         for (j = i + 1; j < bp->nsweep && bp->box[bp->sweep[j]].lo.x <= a->hi.x; j++) {
             int x = bp->sweep[i], y = bp->sweep[j];
+            /* two static bodies make no pair: furniture overlapping at its
+             * joints is not met again every frame */
+            if (a->frame == VR_BOX_FOR_GOOD && bp->box[y].frame == VR_BOX_FOR_GOOD) continue;
             if (!vrBox_Disjoint(a, &bp->box[y])) meet(ctx, x < y ? x : y, x < y ? y : x);
         }
     }

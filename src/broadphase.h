@@ -74,7 +74,8 @@ static inline int vrBox_Disjoint(const vrBox *a, const vrBox *b)
 /* both boxes valid and apart */
 static inline int vrBroad_Apart(const vrBox *a, const vrBox *b) { return a->valid && b->valid && vrBox_Disjoint(a, b); }
 /* A new frame [t0, T]: new boxes, sorted and swept.  Calls meet(ctx, x, y)
- * for every two held bodies (x < y) whose boxes overlap and boxless(ctx,
+ * for every two held bodies (x < y), not both static, whose boxes overlap
+ * and boxless(ctx,
  * id) for every held body without a valid box.  Returns -1 (and calls
  * nothing) when out of memory: the caller must then assume every pair
  * could meet. */

@@ -1,7 +1,7 @@
 /* test_broadphase.c — the bodies an event's box meets (vrBroad_Meeting)
  * are exactly those a look at every body finds, however the events rebox
  * bodies within a frame, and the frame start's sweep meets every
- * overlapping pair once. */
+ * overlapping pair once (but two static bodies, which make no pair). */
 #include <stdlib.h>
 #include <string.h>
 #include "test.h"
@@ -36,6 +36,9 @@ static void make_spheres(void)
                       quat_identity(), vec3_zero(), &flight);
         ptr[i] = b;
     }
+    /* two pieces of furniture that overlap (static: no pair) */
+    vrBody_Anchor(&body[1], 0, vec3_add(body[0].m.x0, vec3_make(0.1, 0, 0)), vec3_zero(), quat_identity(), vec3_zero(),
+                  &flight);
 }
 
 typedef struct { unsigned char seen[NB]; int n; } Found;
@@ -66,11 +69,13 @@ static int pairs_met;
 static void count_pair(void *ctx, int x, int y) { (void)ctx, (void)x, (void)y, pairs_met++; }
 static void no_box(void *ctx, int id) { (void)ctx, (void)id; }
 
+/* the pairs the sweep must meet: overlapping, not both static (the
+ * first NSTATIC bodies) */
 static int overlapping_pairs(vrBroadphase *bp)
 {
     int x, y, n = 0;
     for (x = 0; x < NB; x++)
-        for (y = x + 1; y < NB; y++) n += !vrBroad_Apart(&bp->box[x], &bp->box[y]);
+        for (y = x + 1; y < NB; y++) n += y >= NSTATIC && !vrBroad_Apart(&bp->box[x], &bp->box[y]);
     return n;
 }
 
