@@ -182,14 +182,15 @@ static void deactivate(vrOwner *o, int pi)
 static void place(vrOwner *o, int pi)
 {
     vrPair *p = &o->pair[pi];
-    vrHeap_Remove(&o->heap, pi);
     deactivate(o, pi);
-    if (!o->p.use_heap || !p->scheduled) return;
-    if (p->inside) {
+    /* a pair in the heap already moves to its new key in one sift */
+    if (o->p.use_heap && p->scheduled && !p->inside && p->key < INFINITY
+        && vrHeap_Set(&o->heap, pi, p->key, p->order) == 0)
+        return;
+    vrHeap_Remove(&o->heap, pi);
+    if (o->p.use_heap && p->scheduled && p->inside) {
         p->active = o->active.n;
         list_push(&o->active, pi);
-    } else if (p->key < INFINITY) {
-        vrHeap_Set(&o->heap, pi, p->key, p->order);
     }
 }
 
