@@ -20,7 +20,13 @@
 
 typedef struct vrBox { vec3 lo, hi; int valid; long long frame; } vrBox;
 
-/* pair index by the pair's order ((a << 32) | b): open addressing */
+/* a pair's order: (a << 32) | b for its bodies a < b (in either order here) */
+static inline long long vrPair_Order(int x, int y)
+{
+    return x < y ? ((long long)x << 32) | (long long)y : ((long long)y << 32) | (long long)x;
+}
+
+/* pair index by the pair's order (vrPair_Order): open addressing */
 typedef struct vrPairMap { long long *key; int *val; int cap, n; } vrPairMap;
 
 typedef struct vrBroadphase {

@@ -273,7 +273,7 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
     memset(p, 0, sizeof *p);
     p->a = a;
     p->b = b;
-    p->order = ((long long)a << 32) | (long long)b;
+    p->order = vrPair_Order(a, b);
     p->t_check = -INFINITY;
     p->key = -INFINITY;
     p->quiet_until = -INFINITY;
@@ -406,7 +406,7 @@ static void wake_pairs_of(vrOwner *o, int id)
 static void wake_met(void *ctx, int x, int y)
 {
     vrOwner *o = ctx;
-    int pi = vrPairMap_Find(&o->bp.map, ((long long)x << 32) | y);
+    int pi = vrPairMap_Find(&o->bp.map, vrPair_Order(x, y));
     if (pi >= 0) wake(o, pi);
 }
 
@@ -452,7 +452,7 @@ static void changed_meets(void *ctx, int y)
 {
     vrChanged *c = ctx;
     vrOwner *o = c->o;
-    int x = c->id, pi = vrPairMap_Find(&o->bp.map, x < y ? ((long long)x << 32) | y : ((long long)y << 32) | x);
+    int x = c->id, pi = vrPairMap_Find(&o->bp.map, vrPair_Order(x, y));
     if (pi >= 0 && (o->hot[pi] & HOT_DORMANT)) changed_pair(o, pi, c->box, x, y);
 }
 

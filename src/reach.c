@@ -28,7 +28,7 @@ static double bound_of(const vrBody *b, double t, double T, const vrFlight *f)
     accel = vr_max(vec3_len(f->accel), vec3_len(b->m.a));
     vrBody_Velocity(b, t, &v);
     speed = vr_min(f->max_linear, vec3_len(v) + accel * (T - t));
-    return (speed + vrBody_SpinBound(b) * (b->shape.kind == VR_SHAPE_SPHERE ? 0.0 : b->r_out)) * (1 + 1e-9) + 1e-12;
+    return (speed + vrSchedule_SpinReach(b)) * (1 + 1e-9) + 1e-12;
 }
 
 static void lift(vrReach *r, int k)

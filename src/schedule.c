@@ -10,8 +10,7 @@
 double vrSchedule_Reach(const vrBody *b, double ts, double T, const vrFlight *f)
 {
     if (!b || !vrBody_IsFree(b)) return 0;
-    return vrBody_SpeedBound(b, ts, T - ts, vec3_len(f->accel), f->max_linear)
-         + vrBody_SpinBound(b) * (b->shape.kind == VR_SHAPE_SPHERE ? 0.0 : b->r_out);
+    return vrBody_SpeedBound(b, ts, T - ts, vec3_len(f->accel), f->max_linear) + vrSchedule_SpinReach(b);
 }
 
 void vrSchedule_GridFor(double fastest, double ts, double T, double d, double internal_step, vrGrid *g)
@@ -44,7 +43,7 @@ void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, do
 {
     double fastest = 0;
     int i;
-    for (i = 0; i < nbodies && internal_step <= 0 && T > ts; i++) fastest = vr_max(fastest, vrSchedule_Reach(bodies[i], ts, T, f));
+    for (i = 0; i < nbodies && vrSchedule_NeedsReach(ts, T, internal_step); i++) fastest = vr_max(fastest, vrSchedule_Reach(bodies[i], ts, T, f));
     vrSchedule_GridFor(fastest, ts, T, d, internal_step, g);
 }
 

@@ -19,6 +19,16 @@ void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, do
                      double internal_step, const vrFlight *f, vrGrid *g);
 /* a body's s_i + w_i R_i for the span [ts, T] (0 when not free) */
 double vrSchedule_Reach(const vrBody *b, double ts, double T, const vrFlight *f);
+/* its w_i R_i alone (a true sphere's turning moves no surface point) */
+static inline double vrSchedule_SpinReach(const vrBody *b)
+{
+    return vrBody_SpinBound(b) * (b->shape.kind == VR_SHAPE_SPHERE ? 0.0 : b->r_out);
+}
+/* the grid of [ts, T] depends on the bodies' reach (no forced step, time left) */
+static inline int vrSchedule_NeedsReach(double ts, double T, double internal_step)
+{
+    return internal_step <= 0 && T > ts;
+}
 /* the grid of [ts, T] given the largest reach over the free bodies */
 void vrSchedule_GridFor(double fastest, double ts, double T, double d, double internal_step, vrGrid *g);
 /* the first k >= 1 whose grid point is at or after time t (n + 1 if none) */

@@ -928,7 +928,7 @@ static void span_grid(const vrWorld *w, double ts, double T, const vrParams *p, 
         vrSchedule_Grid(w->dyn, w->ndyn, ts, T, p->d, w->s.internal_step, &p->flight, g);
         return;
     }
-    vrSchedule_GridFor(w->s.internal_step > 0 || !(T > ts) ? 0 : vrReach_Fastest(&w->reach, w->dyn, ts, &p->flight),
+    vrSchedule_GridFor(vrSchedule_NeedsReach(ts, T, w->s.internal_step) ? vrReach_Fastest(&w->reach, w->dyn, ts, &p->flight) : 0,
                        ts, T, p->d, w->s.internal_step, g);
 }
 
