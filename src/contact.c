@@ -913,18 +913,19 @@ vec3 vrShape_Support(const vrShape *s, const vrPose *p, vec3 dir)
 }
 
 /* Andrew's monotone chain, then edge tests */
-int vrRegion_Contains(const vec3 *pts, int n, vec3 nrm, vec3 q, double tol)
+double vrRegion_Margin(const vec3 *pts, int n, vec3 nrm, vec3 q)
 {
     vec3 t1 = vec3_orthogonal(nrm), t2 = vec3_cross(nrm, t1);
     vrP2 small[VR_REGION_MAX], hsmall[2 * VR_REGION_MAX], *p = small, *h = hsmall;
-    int i, k = 0, lower, inside = 1;
+    int i, k = 0, lower;
+    double margin = INFINITY;
     if (n > VR_REGION_MAX) {       /* several supports' regions together */
         p = malloc((size_t)n * sizeof *p);
         h = malloc((size_t)(2 * n) * sizeof *h);
         if (!p || !h) {
             free(p == small ? NULL : p);
             free(h == hsmall ? NULL : h);
-            return 0;
+            return -INFINITY;
         }
     }
     for (i = 0; i < n; i++) {
@@ -942,16 +943,21 @@ int vrRegion_Contains(const vec3 *pts, int n, vec3 nrm, vec3 q, double tol)
         h[k++] = p[i];
     }
     if (k > 1) k--;                                /* the last point repeats the first */
-    if (k == 1) inside = hypot(h[0].x, h[0].y) <= tol;
-    else if (k == 2) inside = seg_dist(h[0], h[1]) <= tol;
-    for (i = 0; k > 2 && i < k && inside; i++) {
+    if (k == 1) margin = -hypot(h[0].x, h[0].y);
+    else if (k == 2) margin = -seg_dist(h[0], h[1]);
+    for (i = 0; k > 2 && i < k; i++) {
         vrP2 a = h[i], b = h[(i + 1) % k], o = {0, 0};
         double len = hypot(b.x - a.x, b.y - a.y);
-        if (len > 0 && cross2(a, b, o) / len < -tol) inside = 0;
+        if (len > 0 && cross2(a, b, o) / len < margin) margin = cross2(a, b, o) / len;
     }
     if (p != small) free(p);
     if (h != hsmall) free(h);
-    return inside;
+    return margin;
+}
+
+int vrRegion_Contains(const vec3 *pts, int n, vec3 nrm, vec3 q, double tol)
+{
+    return vrRegion_Margin(pts, n, nrm, q) >= -tol;
 }
 
 int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,

@@ -116,6 +116,10 @@ vec3 vrShape_Support(const vrShape *s, const vrPose *p, vec3 dir);
 /* Is q inside the convex hull of pts (n of them) seen along nrm, within tol?  (SPEC 3.1: a support's centre of mass over
  * its contact region.) */
 int vrRegion_Contains(const vec3 *pts, int n, vec3 nrm, vec3 q, double tol);
+/* How far q lies inside that hull (negative: outside by that much; a
+ * point or segment hull gives minus q's distance to it; -INFINITY when out
+ * of memory).  Contains is Margin >= -tol. */
+double vrRegion_Margin(const vec3 *pts, int n, vec3 nrm, vec3 q);
 
 /* Penetration depth and direction by libccd's MPR (penetration.c): called by
  * the above when polyhedra overlap (spheres use closed forms); exposed for

@@ -968,6 +968,89 @@ static int quiet_slide(vrOwner *o, const vrPair *p, double t, const vrContact *c
     return 1;
 }
 
+/* A box, superquadric or ball sliding on a level static box (the table,
+ * the floor), supported by it alone: every evaluation until the frame's
+ * end would find it inside, supported, with no event, unless something
+ * changes either body (which flags the pair) or its own motion brings a
+ * change.  This proves, from the query at t, that its motion cannot, and
+ * then no evaluation is made until the frame's end (heap = 1 only; heap =
+ * 0 looks at every pair at every step and finds nothing, so the runs keep
+ * the same bits).  Over the rest of the frame (length span), with the
+ * normal n along one of the box's axes and x's footprint staying over the
+ * box's face:
+ *  - x's spin changes at most |omega x L| / I_min a second, growing at
+ *    most by e^(spin span) (torque-free: d omega/dt = -R I^-1 R^T (omega
+ *    x L)); 4x for the integrator of asymmetric bodies;
+ *  - so every point of x moves along n at most U = |n.v| + |n.a| span +
+ *    w_perp R a second (w_perp: the spin's part off n; turning about n
+ *    moves nothing along it), and at most H = U span in all: the contact
+ *    points never approach or separate by v_eps / 2, the distance stays
+ *    inside (0, d], and no vertex crosses the region's slab edge;
+ *  - the region is x's near vertices turned about n and carried along,
+ *    tilted at most w_perp span: the centre of mass stays inside it. */
+#define QUIET_FACE_MARGIN 1e-6   /* m: x's footprint inside the box's face */
+
+/* x's footprint (a ball's centre) stays over the face of static box Y
+ * whose normal is axis k until the frame's end */
+static int over_face(const vrOwner *o, const vrBody *X, const vrPose *px, const vrBody *Y, int k, double t)
+{
+    vec3 lo, hi, vlo, vhi;
+    double turn = 0;
+    int j;
+    vrBody_PathBox(X, t, o->bp.T, &lo, &hi);
+    vlo = vhi = px->p;
+    if (!is_sphere(X)) {   /* its vertices now, and how far turning can carry them */
+        for (j = 0; j < X->shape.poly->nv; j++) {
+            vec3 w = vrPose_apply(px, X->shape.poly->vert[j]);
+            vlo = vec3_min(vlo, w);
+            vhi = vec3_max(vhi, w);
+        }
+        turn = X->m.spin * X->r_out * (o->bp.T - t);
+    }
+    for (j = 0; j < 3; j++) {
+        double at = vec3_get(Y->m.x0, j), half = vec3_get(Y->shape.half, j) - turn - QUIET_FACE_MARGIN;
+        double from = vec3_get(vlo, j) + vec3_get(lo, j) - vec3_get(px->p, j);
+        double to = vec3_get(vhi, j) + vec3_get(hi, j) - vec3_get(px->p, j);
+        if (j != k && !(from - at > -half && to - at < half)) return 0;
+    }
+    return 1;
+}
+
+static int quiet_support(vrOwner *o, const vrPair *p, double t, const vrPose *pa, const vrPose *pb,
+                         const vrContact *c)
+{
+    int x_is_a = !frozen(o->body[p->a]);
+    const vrBody *X = o->body[x_is_a ? p->a : p->b], *Y = o->body[x_is_a ? p->b : p->a];
+    const vrPose *px = x_is_a ? pa : pb;
+    vec3 n = x_is_a ? vec3_neg(c->n) : c->n, v, w, q;  /* n: from Y toward X */
+    double span = o->bp.T - t, top, w_perp, drift, U, H;
+    int k, j;
+    if (!Y->is_static || Y->shape.kind != VR_SHAPE_BOX || frozen(X) || X->nsupport != 1
+        || X->support[0].partner != Y->id || X->support[0].joint || c->npoints >= VR_REGION_MAX)
+        return 0;
+    if (Y->m.q0.w != 1 || Y->m.q0.x != 0 || Y->m.q0.y != 0 || Y->m.q0.z != 0) return 0;
+    for (k = 0; k < 3 && fabs(vec3_get(n, k)) != 1; k++)
+        ;
+    if (k == 3 || vec3_get(n, (k + 1) % 3) != 0 || vec3_get(n, (k + 2) % 3) != 0) return 0;
+    if (2 * vec3_get(Y->shape.half, k) <= o->p.d + QUIET_FACE_MARGIN) return 0;  /* its far face stays out of the slab */
+    vrBody_Velocity(X, t, &v);
+    w = vrBody_Omega(X, px);
+    drift = X->i_min > 0 ? vec3_len(vec3_cross(w, X->m.L)) / X->i_min * span * exp(X->m.spin * span) : 0;
+    w_perp = vec3_len(vec3_madd(w, -vec3_dot(w, n), n)) + 4 * drift + 1e-12;
+    U = fabs(vec3_dot(n, v)) + fabs(vec3_dot(n, X->m.a)) * span + w_perp * X->r_out;
+    H = U * span + 1e-12;
+    if (!(U <= 0.5 * VR_V_EPS) || !(c->dist - H > VR_PENETRATION_TOL) || !(c->dist + H < o->p.d - 1e-9)) return 0;
+    if (!over_face(o, X, px, Y, k, t)) return 0;
+    if (is_sphere(X)) return 1;   /* its region is the point below its centre */
+    top = vec3_dot(n, Y->m.x0) + vec3_get(Y->shape.half, k);
+    for (j = 0; j < X->shape.poly->nv; j++) {
+        double gap = vec3_dot(n, vrPose_apply(px, X->shape.poly->vert[j])) - top;
+        if (fabs(gap - o->p.d) <= H + 1e-8) return 0;   /* it might enter or leave the region's slab */
+    }
+    q = vec3_madd(px->p, vec3_dot(vec3_sub(c->point[0], px->p), n), n);
+    return vrRegion_Margin(c->point, c->npoints, n, q) > 2 * X->r_out * w_perp * span + 1e-8;
+}
+
 /* Evaluates pair pi at t.  t_prev is the previous grid point (t_prev == t at
  * a span start, where no step can be bisected).  Returns 1 with *ev when the
  * pair has an event. */
@@ -993,7 +1076,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     settle(o, pi, 1, t);
     for_events(o, p, t, &pa, &pb, &c);   /* the query above had the region: event_query's */
     if (inside_events(o, ev, t, p, &pa, &pb, &c)) return 1;
-    if (o->p.use_heap && quiet_slide(o, p, t, &c)) p->quiet_until = o->bp.T;
+    if (o->p.use_heap && (quiet_slide(o, p, t, &c) || quiet_support(o, p, t, &pa, &pb, &c))) p->quiet_until = o->bp.T;
     return 0;
 }
 
