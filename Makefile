@@ -52,6 +52,9 @@ $(PRODUCTS): %: build/rel/%
 build/gen/vroc_%.c: src/parallel/%.lcm | deps
 	@mkdir -p build/gen
 	lcm-gen -c --c-cpath build/gen --c-hpath build/gen $<
+# the header comes with the .c: a type's other users (its .d files name the
+# header) are rebuilt after it changes, not compiled against the old one
+build/gen/vroc_%.h: build/gen/vroc_%.c ;
 
 define VARIANT
 $(1)_OBJ := $$(patsubst %.c,build/$(1)/%.o,$$(LIB_SRC)) \

@@ -16,8 +16,10 @@
 
 /* a body resting on (or sliding over) a partner: n points from the partner
  * toward the body.  joint: the support began with others together (the
- * centre of mass over their regions together, not over this one alone) */
-typedef struct vrSupport { int partner; vec3 n; int joint; } vrSupport;
+ * centre of mass over their regions together, not over this one alone).
+ * fixed: the partner is static (never moves), so the body's own velocity
+ * along n is the relative one */
+typedef struct vrSupport { int partner; vec3 n; int joint; int fixed; } vrSupport;
 
 /* the anchor of free flight (thesis 3.2.3, SPEC 3.2) */
 typedef struct vrMotion {

@@ -1413,6 +1413,7 @@ static int respond_support(vrOwner *o, const vrEvent *ev, vrUpdate *up)
         st->support[st->nsupport].partner = ev->partner;
         st->support[st->nsupport].n = ev->n;
         st->support[st->nsupport].joint = 0;
+        st->support[st->nsupport].fixed = o->body[ev->partner]->is_static;
         st->nsupport++;
         return 0;
     }
@@ -1422,7 +1423,25 @@ static int respond_support(vrOwner *o, const vrEvent *ev, vrUpdate *up)
     return 0;
 }
 
-int vrOwner_Respond(vrOwner *o, const vrEvent *ev, vrUpdate *up)
+/* Supported bodies slide at constant distance (SPEC 3.1).  What an event
+ * leaves of a body's velocity along the normal of a static support, when
+ * slower than v_eps, no contact impulse would ever answer: it goes, as it
+ * does when support begins (a ball nudged at a slant by a box, or a ball
+ * that begins to lean on another, would otherwise sink into the table, or
+ * rise off it, at a fraction of a mm/s for ever). */
+static void hold_to_supports(vrUpdate *up)
+{
+    int i, k;
+    for (i = 0; i < up->n; i++) {
+        vrBodyState *st = &up->body[i];
+        for (k = 0; k < st->nsupport && !st->raw; k++) {
+            double along = vec3_dot(st->support[k].n, st->v);
+            if (st->support[k].fixed && fabs(along) <= VR_V_EPS) st->v = vec3_madd(st->v, -along, st->support[k].n);
+        }
+    }
+}
+
+static int respond(vrOwner *o, const vrEvent *ev, vrUpdate *up)
 {
     switch (ev->kind) {
     case VR_EV_IMPACT:
@@ -1436,6 +1455,13 @@ int vrOwner_Respond(vrOwner *o, const vrEvent *ev, vrUpdate *up)
     default:
         return 0;
     }
+}
+
+int vrOwner_Respond(vrOwner *o, const vrEvent *ev, vrUpdate *up)
+{
+    if (respond(o, ev, up) != 0) return -1;
+    hold_to_supports(up);
+    return 0;
 }
 
 void vrOwner_Stats(const vrOwner *o, vrOwnerStats *s)

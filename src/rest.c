@@ -166,7 +166,7 @@ static int carried(vrWorld *w, const vrCandidate *c, int k, vec3 g, double T)
 /* support begins on every one of the contacts, as for one (SPEC 3.1): the
  * force's normal components go, and what is left of the normal relative
  * velocity */
-static int support_all(vrUpdate *up, vrBody *b, double T, const vrCandidate *c, int k)
+static int support_all(const vrWorld *w, vrUpdate *up, vrBody *b, double T, const vrCandidate *c, int k)
 {
     vrBodyState *st = vrUpdate_Body(up, b, T);
     int i;
@@ -176,6 +176,7 @@ static int support_all(vrUpdate *up, vrBody *b, double T, const vrCandidate *c, 
         st->support[st->nsupport].partner = c[i].partner;
         st->support[st->nsupport].n = c[i].n;
         st->support[st->nsupport].joint = 1;
+        st->support[st->nsupport].fixed = w->obj[c[i].partner]->body.is_static;
         st->nsupport++;
     }
     return 0;
@@ -199,7 +200,7 @@ static int decide(vrWorld *w, vrUpdate *up, double T, vec3 g, const vrCandidate 
     vrBody *b = &w->obj[c[0].body]->body;
     int held = joint_supports(b) > 0, carry = k >= 2 && carried(w, c, k, g, T);
     if (held && !carry) return drop_joint(up, b, T);
-    if (!held && carry) return support_all(up, b, T, c, k);
+    if (!held && carry) return support_all(w, up, b, T, c, k);
     return 0;
 }
 

@@ -768,6 +768,35 @@ static int test_heap_on_off_and_reruns_are_bit_identical(void)
     return 0;
 }
 
+/* A big ball creeping at 8 mm/s along a table nudges a small one whose
+ * centre is 5 cm lower: the normal between them slants down onto the small
+ * ball, and the push gives it a downward speed of some 0.7 mm/s, slower
+ * than v_eps, that no contact impulse would ever answer; the big ball
+ * leans on the small one for a moment, and support beginning there leaves
+ * it rising off the table at 0.06 mm/s.  Supported bodies slide at
+ * constant distance (SPEC 3.1): both go, and the balls keep their heights
+ * (before, the small one sank and the big one rose, for ever). */
+static int test_a_slanted_nudge_does_not_sink_a_supported_ball(void)
+{
+    vrWorld *w = new_world(0.05, 0.01, 9.8);
+    vrObjectId big, small;
+    vrObjectState s;
+    box(w, "table", vec3_make(1, 1, 0.05), vec3_make(0, 0, 0), -1, 1);
+    big = sphere(w, "big", 0.15, vec3_make(0, 0, 0.205), vec3_make(0.008, 0, 0), 1, 1);
+    small = sphere(w, "small", 0.1, vec3_make(0.26, 0, 0.155), vec3_make(0, 0, 0), 1, 1);
+    ENSURE(step(w, 80) == 0);
+    s = state(w, small);
+    printf("    small ball: x %.6f, z %.17g, vx %.3g mm/s, vz %.3g\n", s.position[0], s.position[2],
+           1e3 * s.linear_vel[0], s.linear_vel[2]);
+    ENSURE(stats(w).collisions > 0);
+    ENSURE(s.linear_vel[0] > 0.001);              /* it was pushed along */
+    ENSURE(s.linear_vel[2] == 0);
+    ENSURE_NEAR(s.position[2], 0.155, 1e-12);
+    ENSURE_NEAR(state(w, big).position[2], 0.205, 1e-12);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
 /* A ball sliding off a table and a ball falling along a wall, while a cube
  * spinning at 30 rad/s far away makes the internal steps fine (some 300 a
  * frame): the two contacts cannot change before the frame ends until the
@@ -933,6 +962,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_balls_and_box_come_to_rest_without_jitter);
     RUN_TEST(test_plank_across_two_blocks_rests_on_both);
     RUN_TEST(test_ball_on_a_knocked_block_wakes_and_falls);
+    RUN_TEST(test_a_slanted_nudge_does_not_sink_a_supported_ball);
     RUN_TEST(test_sliding_over_flush_tables_feels_no_seam);
     RUN_TEST(test_a_real_step_still_stops_a_sliding_box);
     RUN_TEST(test_settled_box_keeps_no_rocking_spin);

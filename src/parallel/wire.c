@@ -22,8 +22,9 @@ int vrWire_PutStates(vrWireStates *w, const vrUpdate *up)
     w->m = calloc((size_t)(up->n ? up->n : 1), sizeof *w->m);
     w->partner = calloc((size_t)(up->n ? up->n : 1), sizeof *w->partner);
     w->joint = calloc((size_t)(up->n ? up->n : 1), sizeof *w->joint);
+    w->fixed = calloc((size_t)(up->n ? up->n : 1), sizeof *w->fixed);
     w->normal = calloc((size_t)(up->n ? up->n : 1), sizeof *w->normal);
-    if (!w->m || !w->partner || !w->joint || !w->normal) return -1;
+    if (!w->m || !w->partner || !w->joint || !w->fixed || !w->normal) return -1;
     for (i = 0; i < up->n; i++) {
         const vrBodyState *st = &up->body[i];
         vroc_body_state_t *m = &w->m[i];
@@ -40,10 +41,12 @@ int vrWire_PutStates(vrWireStates *w, const vrUpdate *up)
         m->nnormal = 3 * st->nsupport;
         m->partner = w->partner[i];
         m->joint = w->joint[i];
+        m->fixed = w->fixed[i];
         m->normal = w->normal[i];
         for (k = 0; k < st->nsupport; k++) {
             w->partner[i][k] = st->support[k].partner;
             w->joint[i][k] = st->support[k].joint;
+            w->fixed[i][k] = st->support[k].fixed;
             put3(&w->normal[i][3 * k], st->support[k].n);
         }
     }
@@ -55,6 +58,7 @@ void vrWire_FreeStates(vrWireStates *w)
     free(w->m);
     free(w->partner);
     free(w->joint);
+    free(w->fixed);
     free(w->normal);
     memset(w, 0, sizeof *w);
 }
@@ -80,6 +84,7 @@ static int get_state(const vroc_body_state_t *m, int max_id, vrBodyState *st)
         if (m->partner[k] < 0 || m->partner[k] >= max_id) return -1;
         st->support[k].partner = m->partner[k];
         st->support[k].joint = m->joint[k] != 0;
+        st->support[k].fixed = m->fixed[k] != 0;
         st->support[k].n = get3(&m->normal[3 * k]);
     }
     return 0;

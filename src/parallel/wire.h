@@ -18,6 +18,7 @@ typedef struct vrWireStates {
     vroc_body_state_t *m;
     int32_t (*partner)[VR_MAX_SUPPORTS];
     int32_t (*joint)[VR_MAX_SUPPORTS];
+    int32_t (*fixed)[VR_MAX_SUPPORTS];
     double (*normal)[3 * VR_MAX_SUPPORTS];
 } vrWireStates;
 
