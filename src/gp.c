@@ -49,6 +49,16 @@ typedef struct vrUndo {
 
 typedef struct vrIntList { int n, cap; int *v; } vrIntList;
 
+/* A pair's last contacts with their regions (see query) */
+#define REGION_MEMO 64
+typedef struct vrRegionMemo {
+    long long order;          /* the pair; 0 with nothing kept (a pair's order is never 0: a < b) */
+    double d;
+    vec3 pa, pb;              /* the poses it was made at */
+    quat qa, qb;
+    vrContact c;
+} vrRegionMemo;
+
 struct vrOwner {
     vrParams p;
     double v_rest;            /* sqrt(2 |a| d), SPEC 3.1 */
@@ -76,6 +86,7 @@ struct vrOwner {
     vrEvent *found;           /* scratch: the events of one grid point */
     int nfound, foundcap;
     vrResponder *responder;
+    vrRegionMemo memo[REGION_MEMO];
     long long checks, heap_pops;
     int awake_lost;           /* no memory to list a pair awake: events look at every pair */
     void (*progress)(void *ctx);
@@ -99,6 +110,12 @@ static int push_event(vrEvent **arr, int *n, int *cap, const vrEvent *ev)
 }
 
 /* ---- life cycle ---------------------------------------------------------------- */
+
+static void forget_regions(vrOwner *o)
+{
+    int i;
+    for (i = 0; i < REGION_MEMO; i++) o->memo[i].order = 0;
+}
 
 vrOwner *vrOwner_Create(void)
 {
@@ -244,6 +261,7 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
     if (!o->body[id]) o->nheld++;
     o->body[id] = b;
     vrBroad_BodyChanged(&o->bp, id);
+    forget_regions(o);   /* its shape may be new */
     return 0;
 }
 
@@ -341,6 +359,7 @@ void vrOwner_DropBody(vrOwner *o, int id)
 {
     int i, k = 0;
     if (id >= o->bodycap || !o->body[id]) return;
+    forget_regions(o);
     for (i = 0; i < o->npair; i++)
         if (o->pair[i].a != id && o->pair[i].b != id) o->pair[k++] = o->pair[i];
     o->npair = k;
@@ -555,14 +574,54 @@ static void real_poses(vrOwner *o, const vrPair *p, double t, vrPose *pa, vrPose
     if (is_sphere(o->body[p->b])) vrBody_Pose(o->body[p->b], t, pb);
 }
 
+static int same_bits(const void *x, const void *y, size_t n) { return memcmp(x, y, n) == 0; }
+
+/* a contact and its region's points, not the unused room after them */
+static void copy_contact(vrContact *to, const vrContact *from)
+{
+    int i;
+    to->dist = from->dist, to->n = from->n, to->pa = from->pa, to->pb = from->pb;
+    to->npoints = from->npoints, to->walk_steps = from->walk_steps;
+    for (i = 0; i < from->npoints; i++) to->point[i] = from->point[i];
+}
+
+/* A contact is a function of the two poses (and d) alone (SPEC 3.2's
+ * determinism rule), and a pair is asked again at the same poses: after
+ * an event at a grid point the pairs of its bodies are evaluated anew
+ * there, the responding one among them (a body's pose at its own event is
+ * the same bits from its new anchor).  The last region of each of a few
+ * pairs is kept; a body held anew (a new shape) forgets them all. */
+static vrRegionMemo *region_memo(vrOwner *o, const vrPair *p, const vrPose *pa, const vrPose *pb)
+{
+    vrRegionMemo *m = &o->memo[(unsigned long long)p->order % REGION_MEMO];
+    if (m->order == p->order && m->d == o->p.d && same_bits(&m->pa, &pa->p, sizeof m->pa)
+        && same_bits(&m->qa, &pa->q, sizeof m->qa) && same_bits(&m->pb, &pb->p, sizeof m->pb)
+        && same_bits(&m->qb, &pb->q, sizeof m->qb))
+        return m;
+    return NULL;
+}
+
 static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPose *pb, vrContact *c)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
+    const vrRegionMemo *kept;
+    vrRegionMemo *m;
     vrBody_ShapePose(A, t, pa);
     vrBody_ShapePose(B, t, pb);
+    if (!region) {
+        o->checks++;
+        vrContact_Distance(&A->shape, pa, &B->shape, pb, &p->cache, c);
+        return;
+    }
+    if ((kept = region_memo(o, p, pa, pb)) != NULL) {
+        copy_contact(c, &kept->c);
+        return;
+    }
     o->checks++;
-    if (region) vrContact_Region(&A->shape, pa, &B->shape, pb, o->p.d, &p->cache, c);
-    else vrContact_Distance(&A->shape, pa, &B->shape, pb, &p->cache, c);
+    if (vrContact_Region(&A->shape, pa, &B->shape, pb, o->p.d, &p->cache, c) != 0) return;
+    m = &o->memo[(unsigned long long)p->order % REGION_MEMO];
+    m->order = p->order, m->d = o->p.d, m->pa = pa->p, m->qa = pa->q, m->pb = pb->p, m->qb = pb->q;
+    copy_contact(&m->c, c);
 }
 
 /* Flush surfaces (a table top made of two boxes side by side): a body
