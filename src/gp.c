@@ -1295,11 +1295,13 @@ static int candidate(vrOwner *o, const vrPair *p, int side, double t, vrCandidat
     return 0;
 }
 
+/* (the order they are found in does not matter: rest.c sorts them by body
+ * and partner; with the heap the pairs inside are the active list) */
 int vrOwner_SupportCandidates(vrOwner *o, double t, const unsigned char *want, int nwant, vrCandidates *out)
 {
-    int i, side;
-    for (i = 0; i < o->npair; i++) {
-        const vrPair *p = &o->pair[i];
+    int i, side, n = o->p.use_heap ? o->active.n : o->npair;
+    for (i = 0; i < n; i++) {
+        const vrPair *p = &o->pair[o->p.use_heap ? o->active.v[i] : i];
         if (!p->inside || !p->scheduled) continue;
         for (side = 0; side < 2; side++) {
             int x = side ? p->b : p->a;
