@@ -35,6 +35,9 @@ typedef struct vrShape {
     double radius;              /* sphere */
     vec3 half;                  /* box half extents */
     const vrPolyhedron *poly;   /* box and poly: the hull, body frame */
+    unsigned long serial;       /* which making of the shape (a new one for every edit that
+                                   remakes it): what a memo of contacts keys on, not the
+                                   address, which a new hull may reuse */
 } vrShape;
 
 typedef struct vrFeature { int type; int index; } vrFeature; /* VR_VERTEX / VR_EDGE / VR_FACE */

@@ -53,6 +53,7 @@ typedef struct vrIntList { int n, cap; int *v; } vrIntList;
 #define REGION_MEMO 64
 typedef struct vrRegionMemo {
     long long order;          /* the pair; 0 with nothing kept (a pair's order is never 0: a < b) */
+    unsigned long shape_a, shape_b;   /* the shapes' serials */
     double d;
     vec3 pa, pb;              /* the poses it was made at */
     quat qa, qb;
@@ -110,12 +111,6 @@ static int push_event(vrEvent **arr, int *n, int *cap, const vrEvent *ev)
 }
 
 /* ---- life cycle ---------------------------------------------------------------- */
-
-static void forget_regions(vrOwner *o)
-{
-    int i;
-    for (i = 0; i < REGION_MEMO; i++) o->memo[i].order = 0;
-}
 
 vrOwner *vrOwner_Create(void)
 {
@@ -261,7 +256,6 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
     if (!o->body[id]) o->nheld++;
     o->body[id] = b;
     vrBroad_BodyChanged(&o->bp, id);
-    forget_regions(o);   /* its shape may be new */
     return 0;
 }
 
@@ -359,7 +353,6 @@ void vrOwner_DropBody(vrOwner *o, int id)
 {
     int i, k = 0;
     if (id >= o->bodycap || !o->body[id]) return;
-    forget_regions(o);
     for (i = 0; i < o->npair; i++)
         if (o->pair[i].a != id && o->pair[i].b != id) o->pair[k++] = o->pair[i];
     o->npair = k;
@@ -585,16 +578,18 @@ static void copy_contact(vrContact *to, const vrContact *from)
     for (i = 0; i < from->npoints; i++) to->point[i] = from->point[i];
 }
 
-/* A contact is a function of the two poses (and d) alone (SPEC 3.2's
- * determinism rule), and a pair is asked again at the same poses: after
- * an event at a grid point the pairs of its bodies are evaluated anew
- * there, the responding one among them (a body's pose at its own event is
- * the same bits from its new anchor).  The last region of each of a few
- * pairs is kept; a body held anew (a new shape) forgets them all. */
+/* A contact is a function of the two shapes, their poses and d alone
+ * (SPEC 3.2's determinism rule), and a pair is asked again at the same
+ * poses: after an event at a grid point the pairs of its bodies are
+ * evaluated anew there, the responding one among them (a body's pose at
+ * its own event is the same bits from its new anchor).  The last region of
+ * each of a few pairs is kept, with the serials of the shapes it was made
+ * for (an edit remakes a shape in place, a body put anew has a new one). */
 static vrRegionMemo *region_memo(vrOwner *o, const vrPair *p, const vrPose *pa, const vrPose *pb)
 {
     vrRegionMemo *m = &o->memo[(unsigned long long)p->order % REGION_MEMO];
-    if (m->order == p->order && m->d == o->p.d && same_bits(&m->pa, &pa->p, sizeof m->pa)
+    if (m->order == p->order && m->shape_a == o->body[p->a]->shape.serial
+        && m->shape_b == o->body[p->b]->shape.serial && m->d == o->p.d && same_bits(&m->pa, &pa->p, sizeof m->pa)
         && same_bits(&m->qa, &pa->q, sizeof m->qa) && same_bits(&m->pb, &pb->p, sizeof m->pb)
         && same_bits(&m->qb, &pb->q, sizeof m->qb))
         return m;
@@ -621,6 +616,7 @@ static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPos
     if (vrContact_Region(&A->shape, pa, &B->shape, pb, o->p.d, &p->cache, c) != 0) return;
     m = &o->memo[(unsigned long long)p->order % REGION_MEMO];
     m->order = p->order, m->d = o->p.d, m->pa = pa->p, m->qa = pa->q, m->pb = pb->p, m->qb = pb->q;
+    m->shape_a = A->shape.serial, m->shape_b = B->shape.serial;
     copy_contact(&m->c, c);
 }
 

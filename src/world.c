@@ -516,6 +516,7 @@ static int make_polyhedron(vrObject *o, char *err, size_t n)
 /* shape and mass properties from the definition */
 static int build(vrObject *o, char *err, size_t n)
 {
+    static unsigned long shapes_made;
     const vrObjectDef *d = &o->def;
     vrShape *sh = &o->body.shape;
     mat33 unit;
@@ -538,6 +539,7 @@ static int build(vrObject *o, char *err, size_t n)
         rin = o->poly->r_in;
         rout = o->poly->r_out;
     }
+    sh->serial = ++shapes_made;
     vrBody_SetMassProperties(&o->body, def_mass(d), &unit, rin, rout);
     o->body.elasticity = d->elasticity;
     o->built = 1;

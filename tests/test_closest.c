@@ -111,7 +111,7 @@ static double surface_height(const vrPolyhedron *p, const vrPose *ps, vec3 x)
 /* libccd's depth when the polyhedra overlap, else 0 */
 static double overlap_depth(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb)
 {
-    vrShape sa = {VR_SHAPE_POLY, 0, {0, 0, 0}, NULL}, sb = sa;
+    vrShape sa = {VR_SHAPE_POLY, 0, {0, 0, 0}, NULL, 0}, sb = sa;
     vec3 dir, pos;
     double depth;
     sa.poly = a;
@@ -292,7 +292,7 @@ static int test_walk_penetration_flag_agrees_with_brute_force_and_libccd(void)
     ENSURE(make_shapes() == 0);
     for (i = 0; i < NSHAPES; i++)
         for (j = i; j < NSHAPES; j++) {
-            vrShape sa = {VR_SHAPE_POLY, 0, {0, 0, 0}, NULL}, sb = sa;
+            vrShape sa = {VR_SHAPE_POLY, 0, {0, 0, 0}, NULL, 0}, sb = sa;
             vrWalkCache cache;
             memset(&cache, 0, sizeof cache);
             sa.poly = shape[i];
