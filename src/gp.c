@@ -585,21 +585,22 @@ static void copy_contact(vrContact *to, const vrContact *from)
  * its own event is the same bits from its new anchor).  The last region of
  * each of a few pairs is kept, with the serials of the shapes it was made
  * for (an edit remakes a shape in place, a body put anew has a new one). */
-static vrRegionMemo *region_memo(vrOwner *o, const vrPair *p, const vrPose *pa, const vrPose *pb)
+static vrRegionMemo *memo_slot(vrOwner *o, const vrPair *p)
 {
-    vrRegionMemo *m = &o->memo[(unsigned long long)p->order % REGION_MEMO];
-    if (m->order == p->order && m->shape_a == o->body[p->a]->shape.serial
+    return &o->memo[(unsigned long long)p->order % REGION_MEMO];
+}
+
+static int memo_holds(const vrOwner *o, const vrRegionMemo *m, const vrPair *p, const vrPose *pa, const vrPose *pb)
+{
+    return m->order == p->order && m->shape_a == o->body[p->a]->shape.serial
         && m->shape_b == o->body[p->b]->shape.serial && m->d == o->p.d && same_bits(&m->pa, &pa->p, sizeof m->pa)
         && same_bits(&m->qa, &pa->q, sizeof m->qa) && same_bits(&m->pb, &pb->p, sizeof m->pb)
-        && same_bits(&m->qb, &pb->q, sizeof m->qb))
-        return m;
-    return NULL;
+        && same_bits(&m->qb, &pb->q, sizeof m->qb);
 }
 
 static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPose *pb, vrContact *c)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
-    const vrRegionMemo *kept;
     vrRegionMemo *m;
     vrBody_ShapePose(A, t, pa);
     vrBody_ShapePose(B, t, pb);
@@ -608,13 +609,13 @@ static void query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPos
         vrContact_Distance(&A->shape, pa, &B->shape, pb, &p->cache, c);
         return;
     }
-    if ((kept = region_memo(o, p, pa, pb)) != NULL) {
-        copy_contact(c, &kept->c);
+    m = memo_slot(o, p);
+    if (memo_holds(o, m, p, pa, pb)) {
+        copy_contact(c, &m->c);
         return;
     }
     o->checks++;
     if (vrContact_Region(&A->shape, pa, &B->shape, pb, o->p.d, &p->cache, c) != 0) return;
-    m = &o->memo[(unsigned long long)p->order % REGION_MEMO];
     m->order = p->order, m->d = o->p.d, m->pa = pa->p, m->qa = pa->q, m->pb = pb->p, m->qb = pb->q;
     m->shape_a = A->shape.serial, m->shape_b = B->shape.serial;
     copy_contact(&m->c, c);
@@ -991,6 +992,48 @@ static int clear_by_spheres(vrOwner *o, int pi, double t)
     return 1;
 }
 
+/* The axis (0..2) the unit normal n lies exactly along, when B is a
+ * static unrotated box, so that n can be the normal of one of its faces;
+ * -1 otherwise */
+static int box_face_axis(const vrBody *B, vec3 n)
+{
+    int k;
+    if (!B->is_static || B->shape.kind != VR_SHAPE_BOX) return -1;
+    if (B->m.q0.w != 1 || B->m.q0.x != 0 || B->m.q0.y != 0 || B->m.q0.z != 0) return -1;
+    for (k = 0; k < 3 && fabs(vec3_get(n, k)) != 1; k++)
+        ;
+    if (k == 3 || vec3_get(n, (k + 1) % 3) != 0 || vec3_get(n, (k + 2) % 3) != 0) return -1;
+    return k;
+}
+
+/* x's footprint (a ball's centre) stays over the face of static box Y
+ * whose normal is axis k, inside it by margin, until the frame's end.  px
+ * is x's pose at t (a ball's is not needed). */
+static int over_face(const vrOwner *o, const vrBody *X, const vrPose *px, const vrBody *Y, int k, double t,
+                     double margin)
+{
+    vec3 lo, hi;
+    double turn = 0;
+    int j;
+    vrBody_PathBox(X, t, o->bp.T, &lo, &hi);
+    if (!is_sphere(X)) {   /* its vertices now, carried along the path, and how far turning can carry them */
+        vec3 vlo = px->p, vhi = px->p;
+        for (j = 0; j < X->shape.poly->nv; j++) {
+            vec3 w = vrPose_apply(px, X->shape.poly->vert[j]);
+            vlo = vec3_min(vlo, w);
+            vhi = vec3_max(vhi, w);
+        }
+        lo = vec3_add(vlo, vec3_sub(lo, px->p));
+        hi = vec3_add(vhi, vec3_sub(hi, px->p));
+        turn = X->m.spin * X->r_out * (o->bp.T - t);
+    }
+    for (j = 0; j < 3; j++) {
+        double at = vec3_get(Y->m.x0, j), half = vec3_get(Y->shape.half, j) - turn - margin;
+        if (j != k && !(vec3_get(lo, j) - at > -half && vec3_get(hi, j) - at < half)) return 0;
+    }
+    return 1;
+}
+
 /* A ball sliding on a level table, or grazing a wall: a sphere in the
  * envelope of a static box with no rotation (its only support, if it has
  * one), the contact normal an axis, no velocity or acceleration along it,
@@ -1004,23 +1047,13 @@ static int clear_by_spheres(vrOwner *o, int pi, double t)
 static int quiet_slide(vrOwner *o, const vrPair *p, double t, const vrContact *c)
 {
     const vrBody *S = o->body[p->b], *B = o->body[p->a];
-    vec3 lo, hi;
-    int k, j;
+    int k;
     if (!is_sphere(S)) S = o->body[p->a], B = o->body[p->b];
-    if (!is_sphere(S) || !B->is_static || B->shape.kind != VR_SHAPE_BOX || !vrBody_IsFree(S) || S->nsupport > 1
-        || (S->nsupport == 1 && S->support[0].partner != B->id))
+    if (!is_sphere(S) || !vrBody_IsFree(S) || S->nsupport > 1 || (S->nsupport == 1 && S->support[0].partner != B->id))
         return 0;
-    if (B->m.q0.w != 1 || B->m.q0.x != 0 || B->m.q0.y != 0 || B->m.q0.z != 0) return 0;
-    for (k = 0; k < 3 && fabs(vec3_get(c->n, k)) != 1; k++)
-        ;
-    if (k == 3 || vec3_get(c->n, (k + 1) % 3) != 0 || vec3_get(c->n, (k + 2) % 3) != 0) return 0;
+    if ((k = box_face_axis(B, c->n)) < 0) return 0;
     if (vec3_get(S->m.v0, k) != 0 || vec3_get(S->m.a, k) != 0) return 0;
-    vrBody_PathBox(S, t, o->bp.T, &lo, &hi);
-    for (j = 0; j < 3; j++) {
-        double at = vec3_get(B->m.x0, j), half = vec3_get(B->shape.half, j);
-        if (j != k && !(vec3_get(lo, j) - at > -half + 1e-9 && vec3_get(hi, j) - at < half - 1e-9)) return 0;
-    }
-    return 1;
+    return over_face(o, S, NULL, B, k, t, 1e-9);
 }
 
 /* A box, superquadric or ball sliding on a level static box (the table,
@@ -1045,32 +1078,6 @@ static int quiet_slide(vrOwner *o, const vrPair *p, double t, const vrContact *c
  *    tilted at most w_perp span: the centre of mass stays inside it. */
 #define QUIET_FACE_MARGIN 1e-6   /* m: x's footprint inside the box's face */
 
-/* x's footprint (a ball's centre) stays over the face of static box Y
- * whose normal is axis k until the frame's end */
-static int over_face(const vrOwner *o, const vrBody *X, const vrPose *px, const vrBody *Y, int k, double t)
-{
-    vec3 lo, hi, vlo, vhi;
-    double turn = 0;
-    int j;
-    vrBody_PathBox(X, t, o->bp.T, &lo, &hi);
-    vlo = vhi = px->p;
-    if (!is_sphere(X)) {   /* its vertices now, and how far turning can carry them */
-        for (j = 0; j < X->shape.poly->nv; j++) {
-            vec3 w = vrPose_apply(px, X->shape.poly->vert[j]);
-            vlo = vec3_min(vlo, w);
-            vhi = vec3_max(vhi, w);
-        }
-        turn = X->m.spin * X->r_out * (o->bp.T - t);
-    }
-    for (j = 0; j < 3; j++) {
-        double at = vec3_get(Y->m.x0, j), half = vec3_get(Y->shape.half, j) - turn - QUIET_FACE_MARGIN;
-        double from = vec3_get(vlo, j) + vec3_get(lo, j) - vec3_get(px->p, j);
-        double to = vec3_get(vhi, j) + vec3_get(hi, j) - vec3_get(px->p, j);
-        if (j != k && !(from - at > -half && to - at < half)) return 0;
-    }
-    return 1;
-}
-
 static int quiet_support(vrOwner *o, const vrPair *p, double t, const vrPose *pa, const vrPose *pb,
                          const vrContact *c)
 {
@@ -1080,13 +1087,9 @@ static int quiet_support(vrOwner *o, const vrPair *p, double t, const vrPose *pa
     vec3 n = x_is_a ? vec3_neg(c->n) : c->n, v, w, q;  /* n: from Y toward X */
     double span = o->bp.T - t, top, w_perp, drift, U, H;
     int k, j;
-    if (!Y->is_static || Y->shape.kind != VR_SHAPE_BOX || frozen(X) || X->nsupport != 1
-        || X->support[0].partner != Y->id || X->support[0].joint || c->npoints >= VR_REGION_MAX)
+    if (frozen(X) || X->nsupport != 1 || X->support[0].partner != Y->id || X->support[0].joint
+        || c->npoints >= VR_REGION_MAX || (k = box_face_axis(Y, n)) < 0)
         return 0;
-    if (Y->m.q0.w != 1 || Y->m.q0.x != 0 || Y->m.q0.y != 0 || Y->m.q0.z != 0) return 0;
-    for (k = 0; k < 3 && fabs(vec3_get(n, k)) != 1; k++)
-        ;
-    if (k == 3 || vec3_get(n, (k + 1) % 3) != 0 || vec3_get(n, (k + 2) % 3) != 0) return 0;
     if (2 * vec3_get(Y->shape.half, k) <= o->p.d + QUIET_FACE_MARGIN) return 0;  /* its far face stays out of the slab */
     vrBody_Velocity(X, t, &v);
     w = vrBody_Omega(X, px);
@@ -1095,7 +1098,7 @@ static int quiet_support(vrOwner *o, const vrPair *p, double t, const vrPose *pa
     U = fabs(vec3_dot(n, v)) + fabs(vec3_dot(n, X->m.a)) * span + w_perp * X->r_out;
     H = U * span + 1e-12;
     if (!(U <= 0.5 * VR_V_EPS) || !(c->dist - H > VR_PENETRATION_TOL) || !(c->dist + H < o->p.d - 1e-9)) return 0;
-    if (!over_face(o, X, px, Y, k, t)) return 0;
+    if (!over_face(o, X, px, Y, k, t, QUIET_FACE_MARGIN)) return 0;
     if (is_sphere(X)) return 1;   /* its region is the point below its centre */
     top = vec3_dot(n, Y->m.x0) + vec3_get(Y->shape.half, k);
     for (j = 0; j < X->shape.poly->nv; j++) {
@@ -1491,7 +1494,8 @@ static void hold_to_supports(vrUpdate *up)
     int i, k;
     for (i = 0; i < up->n; i++) {
         vrBodyState *st = &up->body[i];
-        for (k = 0; k < st->nsupport && !st->raw; k++) {
+        if (st->raw) continue;   /* a setup's anchor, restored as it was */
+        for (k = 0; k < st->nsupport; k++) {
             double along = vec3_dot(st->support[k].n, st->v);
             if (st->support[k].fixed && fabs(along) <= VR_V_EPS) st->v = vec3_madd(st->v, -along, st->support[k].n);
         }

@@ -737,6 +737,17 @@ static char *dump_of(vrWorld *w)
     return buf;
 }
 
+/* a and b dump the same bits (both printed when not) */
+static int same_dumps(vrWorld *a, vrWorld *b)
+{
+    char *da = dump_of(a), *db = dump_of(b);
+    int same = strcmp(da, db) == 0;
+    if (!same) printf("%s---\n%s", da, db);
+    free(da);
+    free(db);
+    return same;
+}
+
 static vrWorld *random_room(int heap)
 {
     vrWorld *w = vrWorld_Create();
@@ -750,20 +761,12 @@ static vrWorld *random_room(int heap)
 static int test_heap_on_off_and_reruns_are_bit_identical(void)
 {
     vrWorld *a = random_room(1), *b = random_room(0), *c = random_room(1);
-    char *da, *db, *dc;
     vrStats sa, sb;
-    int same;
     ENSURE(step(a, 60) == 0 && step(b, 60) == 0 && step(c, 60) == 0);
-    da = dump_of(a);
-    db = dump_of(b);
-    dc = dump_of(c);
     sa = stats(a);
     sb = stats(b);
     printf("    heap on: %lld checks, heap off: %lld checks, %lld collisions\n", sa.checks, sb.checks, sa.collisions);
-    same = strcmp(da, db) == 0 && strcmp(da, dc) == 0;
-    if (!same) printf("%s---\n%s", da, db);
-    free(da); free(db); free(dc);
-    ENSURE(same);
+    ENSURE(same_dumps(a, b) && same_dumps(a, c));
     ENSURE(sa.collisions == sb.collisions && sa.collisions > 10);
     ENSURE(sa.checks < sb.checks);
     vrWorld_Destroy(a); vrWorld_Destroy(b); vrWorld_Destroy(c);
@@ -866,18 +869,10 @@ static vrWorld *quiet_scene(int heap)
 static int test_quiet_slides_cost_a_check_a_frame_and_no_bit(void)
 {
     vrWorld *a = quiet_scene(1), *b = quiet_scene(0);
-    char *da, *db;
-    int same;
     ENSURE(step(a, 30) == 0 && step(b, 30) == 0);
-    da = dump_of(a);
-    db = dump_of(b);
-    same = strcmp(da, db) == 0;
     printf("    heap on: %lld checks, heap off: %lld checks, %ld internal steps in the last frame\n", stats(a).checks,
            stats(b).checks, stats(a).subframes);
-    if (!same) printf("%s---\n%s", da, db);
-    free(da);
-    free(db);
-    ENSURE(same);
+    ENSURE(same_dumps(a, b));
     ENSURE(state(a, 2).position[2] < 0.1);           /* the slider fell off the table */
     ENSURE(stats(a).subframes > 100);
     ENSURE(stats(a).checks < 1000);            /* 6,418 when every step looks */
@@ -918,18 +913,10 @@ static vrWorld *quiet_support_scene(int heap)
 static int test_quiet_supports_cost_a_check_a_frame_and_no_bit(void)
 {
     vrWorld *a = quiet_support_scene(1), *b = quiet_support_scene(0);
-    char *da, *db;
-    int same;
     ENSURE(step(a, 30) == 0 && step(b, 30) == 0);
-    da = dump_of(a);
-    db = dump_of(b);
-    same = strcmp(da, db) == 0;
     printf("    heap on: %lld checks, heap off: %lld checks, %ld internal steps in the last frame\n", stats(a).checks,
            stats(b).checks, stats(a).subframes);
-    if (!same) printf("%s---\n%s", da, db);
-    free(da);
-    free(db);
-    ENSURE(same);
+    ENSURE(same_dumps(a, b));
     ENSURE(state(a, 2).position[2] < 0);             /* the tipper fell off the table */
     ENSURE(state(a, 3).position[2] > -0.95);         /* the plate slides on the floor */
     ENSURE(stats(a).collisions > 0);                 /* the tipper's contact impulses */
@@ -1000,16 +987,11 @@ static int test_things_on_a_table_give_the_same_bits_with_the_heap_and_without(v
     long long on = 0, off = 0;
     for (seed = 1; seed <= 6; seed++) {
         vrWorld *a = table_scene(seed, 1), *b = table_scene(seed, 0);
-        char *da, *db;
         int same;
         ENSURE(step(a, 150) == 0 && step(b, 150) == 0);
-        da = dump_of(a);
-        db = dump_of(b);
-        same = strcmp(da, db) == 0;
-        if (!same) printf("    seed %llu:\n%s---\n%s", seed, da, db);
+        same = same_dumps(a, b);
+        if (!same) printf("    (seed %llu)\n", seed);
         on += stats(a).checks, off += stats(b).checks;
-        free(da);
-        free(db);
         vrWorld_Destroy(a);
         vrWorld_Destroy(b);
         ENSURE(same);
@@ -1038,16 +1020,12 @@ static vrWorld *edited_room(int heap)
 static int test_heap_on_off_agree_after_deletions_and_additions(void)
 {
     vrWorld *a = edited_room(1), *b = edited_room(0);
-    char *da = dump_of(a), *db = dump_of(b);
-    int same = strcmp(da, db) == 0;
     printf("    %lld collisions, %lld checks with the heap, %lld without\n", stats(a).collisions,
            stats(a).checks, stats(b).checks);
-    if (!same) printf("%s---\n%s", da, db);
-    ENSURE(same);
+    ENSURE(same_dumps(a, b));
     ENSURE(vrWorld_ObjectCount(a) == 30 + 6 - 3 + 1);
     ENSURE(stats(a).frames == 60 && stats(b).frames == 60);
     ENSURE(stats(a).collisions > 10 && stats(a).checks < stats(b).checks);
-    free(da); free(db);
     vrWorld_Destroy(a); vrWorld_Destroy(b);
     return 0;
 }
