@@ -840,6 +840,46 @@ static const vrOwnerSet serial_owners = {serial_first_event, serial_respond, ser
 
 static const vrOwnerSet *owners(const vrWorld *w) { return w->s.gps > 0 ? &vrSgp_Owners : &serial_owners; }
 
+/* Adds to w->update the state of every live body that id supports, and
+ * lets fn change it (j: the support on id).  The update's records move
+ * as it grows: take none before. */
+static int update_supported_by(vrWorld *w, int id, void (*fn)(const vrWorld *w, vrBodyState *st, int j))
+{
+    int i, j;
+    for (i = 0; i < w->nobj; i++) {
+        vrObject *x = w->obj[i];
+        vrBodyState *st;
+        if (!x || i == id || !x->live) continue;
+        for (j = 0; j < x->body.nsupport && x->body.support[j].partner != id; j++)
+            ;
+        if (j == x->body.nsupport) continue;
+        st = vrUpdate_Body(&w->update, &x->body, w->t);
+        if (!st) return -1;
+        for (j = 0; j < st->nsupport && st->support[j].partner != id; j++)
+            ;
+        if (j < st->nsupport) fn(w, st, j);
+    }
+    return 0;
+}
+
+static void drop_support(const vrWorld *w, vrBodyState *st, int j)
+{
+    int partner = st->support[j].partner, k;
+    (void)w;
+    for (j = k = 0; j < st->nsupport; j++)
+        if (st->support[j].partner != partner) st->support[k++] = st->support[j];
+    st->nsupport = k;
+    st->resting = 0;
+}
+
+/* a partner made static (or dynamic) by an edit: the support's `fixed`
+ * (hold_to_supports in gp.c) follows, and a body resting on it wakes */
+static void refix_support(const vrWorld *w, vrBodyState *st, int j)
+{
+    st->support[j].fixed = w->obj[st->support[j].partner]->body.is_static;
+    st->resting = 0;
+}
+
 /* a definition edited while the simulation runs acts on the live body at
  * the world's time (the start of the next frame): a new shape or mass keeps
  * pose and velocities; an edited position or velocity replaces the current
@@ -876,6 +916,7 @@ static int apply_live_edit(vrWorld *w, vrObject *o, const vrObjectDef *old, char
         if (w->owner) vrOwner_DropBody(w->owner, o->body.id);
         o->live = 0;
         if (make_live(w, err, n) != 0) return -1;
+        if (update_supported_by(w, o->body.id, refix_support) != 0) return fail_msg(err, n, "out of memory");
     }
     return vrWorld_ApplyUpdate(w, &w->update) == 0 ? 0 : fail_msg(err, n, "out of memory");
 }
@@ -891,25 +932,11 @@ static void drop_pending(vrWorld *w, int id)
 int vrWorld_DeleteObject(vrWorld *w, vrObjectId id)
 {
     vrObject *o = vrWorld_Object(w, id);
-    int i, j, k;
     if (!o) return -1;
     if (o->live) {
         /* what rests on or slides over it loses that support */
         w->update.n = 0;
-        for (i = 0; i < w->nobj; i++) {
-            vrObject *x = w->obj[i];
-            vrBodyState *st;
-            if (!x || x == o || !x->live) continue;
-            for (j = 0; j < x->body.nsupport && x->body.support[j].partner != id; j++)
-                ;
-            if (j == x->body.nsupport) continue;
-            st = vrUpdate_Body(&w->update, &x->body, w->t);
-            if (!st) return -1;
-            for (j = k = 0; j < st->nsupport; j++)
-                if (st->support[j].partner != id) st->support[k++] = st->support[j];
-            st->nsupport = k;
-            st->resting = 0;
-        }
+        if (update_supported_by(w, id, drop_support) != 0) return -1;
         if (w->owner) vrOwner_DropBody(w->owner, id);
         w->obj[id] = NULL;
         drop_pending(w, id);

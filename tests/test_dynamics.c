@@ -802,6 +802,41 @@ static int test_a_slanted_nudge_does_not_sink_a_supported_ball(void)
     return 0;
 }
 
+static void set_mass(vrObjectDef *d, const void *arg) { d->mass = *(const double *)arg; d->mass_set = 1; }
+
+/* The same nudge on a table that was a dynamic body lying on the floor
+ * and is made static once the balls rest on it: the small ball's support
+ * now never moves, and what the nudge leaves of its speed along the table's
+ * normal goes as on a table static from the start.  (The support kept the
+ * flag of a moving partner, and the small ball sank.) */
+static int test_a_support_made_static_holds_like_a_static_one(void)
+{
+    vrWorld *w = new_world(0.05, 0.01, 9.8);
+    vrObjectId table, small;
+    vrObjectState s;
+    double fixed = -1;
+    box(w, "floor", vec3_make(2, 2, 0.05), vec3_make(0, 0, -0.105), -1, 0);
+    table = box(w, "table", vec3_make(1, 1, 0.05), vec3_make(0, 0, 0), 1, 0);
+    box(w, "wall", vec3_make(0.05, 1, 0.5), vec3_make(-1, 0, 0.55), -1, 0);  /* nothing else moves the table */
+    sphere(w, "big", 0.15, vec3_make(-0.3, 0, 0.205), vec3_make(0, 0, 0), 1, 1);
+    small = sphere(w, "small", 0.1, vec3_make(-0.04, 0, 0.155), vec3_make(0, 0, 0), 1, 1);
+    ENSURE(step(w, 2) == 0);
+    edit_def(w, table, set_mass, &fixed);
+    {   /* now the big ball creeps toward the small one, as in the test above */
+        double v[3] = {0.008, 0, 0};
+        vrObjectId big = vrWorld_FindObject(w, "big");
+        edit_def(w, big, set_velocity, v);
+    }
+    ENSURE(step(w, 80) == 0);
+    s = state(w, small);
+    printf("    small ball: x %.6f, z %.17g, vz %.3g\n", s.position[0], s.position[2], s.linear_vel[2]);
+    ENSURE(s.linear_vel[0] > 0.001);
+    ENSURE(s.linear_vel[2] == 0);
+    ENSURE_NEAR(s.position[2], 0.155, 1e-12);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
 static void set_half_height(vrObjectDef *d, const void *arg) { d->size[2] = *(const double *)arg; }
 
 /* A box sliding on a table is made thinner mid-run, or the table is (an
@@ -1064,6 +1099,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_plank_across_two_blocks_rests_on_both);
     RUN_TEST(test_ball_on_a_knocked_block_wakes_and_falls);
     RUN_TEST(test_a_slanted_nudge_does_not_sink_a_supported_ball);
+    RUN_TEST(test_a_support_made_static_holds_like_a_static_one);
     RUN_TEST(test_a_box_or_table_made_thinner_mid_run_drops_the_box);
     RUN_TEST(test_sliding_over_flush_tables_feels_no_seam);
     RUN_TEST(test_a_real_step_still_stops_a_sliding_box);
