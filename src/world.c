@@ -611,6 +611,11 @@ unsigned char *vrWorld_PendingMarks(const vrWorld *w)
 {
     unsigned char *mark = calloc((size_t)w->nobj + 1, 1);
     int i;
+    /* An owed overlap check (an edit since the last start, or a start
+     * refused) looks at the flagged pairs: owners made anew now, e.g. for a
+     * new pair set after an edit that only changed a mass, must flag them
+     * all, or an overlap the old owners had flagged goes unseen. */
+    if (mark && w->check_overlaps) memset(mark, 1, (size_t)w->nobj);
     for (i = 0; mark && i < w->pending.n; i++)
         if (w->pending.body[i].id >= 0 && w->pending.body[i].id < w->nobj) mark[w->pending.body[i].id] = 1;
     return mark;

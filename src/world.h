@@ -91,7 +91,8 @@ int vrWorld_PutObject(vrWorld *w, int id, const vrObjectDef *def, const char *of
 /* builds what changed and places new objects; no pairs */
 int vrWorld_Ready(vrWorld *w, char *err, size_t n);
 /* by body id (nobj + 1 bytes, to free; NULL when out of memory): 1 when
- * its state is pending, so that a pair of it is evaluated afresh */
+ * its state is pending, or an overlap check is owed, so that a pair of it
+ * is evaluated afresh */
 unsigned char *vrWorld_PendingMarks(const vrWorld *w);
 
 /* parallel/sgp.c */
