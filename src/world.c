@@ -99,13 +99,22 @@ static int check_settings(const vrSettings *s, char *err, size_t n)
     return 0;
 }
 
-/* what a change of settings does to motion: re-anchor everything */
-static int physics_changed(const vrSettings *a, const vrSettings *b)
+/* What a change of settings does: the pair owners take the new parameters
+ * (PARAMS_OWNERS: every pair is looked at afresh), and where free flight
+ * changes every body is re-anchored at the frame start (PARAMS_MOTION).
+ * The heap changes no motion: re-anchoring for it would round poses
+ * differently from a run that never switched it (SPEC 3.2: heap on and off
+ * give the same bits, and so does switching between them). */
+enum { PARAMS_OWNERS = 1, PARAMS_MOTION = 2 };
+
+static int params_changed(const vrSettings *a, const vrSettings *b)
 {
-    return a->collision_dist != b->collision_dist || a->max_linear != b->max_linear
-        || a->max_angular != b->max_angular || a->force_mag != b->force_mag || a->heap != b->heap
+    if (a->collision_dist != b->collision_dist || a->max_linear != b->max_linear
+        || a->max_angular != b->max_angular || a->force_mag != b->force_mag
         || a->force_dir[0] != b->force_dir[0] || a->force_dir[1] != b->force_dir[1]
-        || a->force_dir[2] != b->force_dir[2];
+        || a->force_dir[2] != b->force_dir[2])
+        return PARAMS_OWNERS | PARAMS_MOTION;
+    return a->heap != b->heap ? PARAMS_OWNERS : 0;
 }
 
 const vrSettings *vrWorld_Settings(const vrWorld *w) { return &w->s; }
@@ -113,7 +122,7 @@ const vrSettings *vrWorld_Settings(const vrWorld *w) { return &w->s; }
 int vrWorld_SetSettings(vrWorld *w, const vrSettings *s, char *err, size_t n)
 {
     if (check_settings(s, err, n) != 0) return -1;
-    if (physics_changed(&w->s, s)) w->params_dirty = 1;
+    w->params_dirty |= params_changed(&w->s, s);
     if (s->time_step != w->s.time_step) {
         w->t_base = w->t;
         w->frames_base = w->frames;
@@ -656,12 +665,13 @@ static int apply_params(vrWorld *w)
 {
     vrParams p = vrWorld_Params(w);
     int i;
-    if (w->owner) vrOwner_SetParams(w->owner, &p);
+    int motion = w->params_dirty & PARAMS_MOTION;
+    if (w->owner) vrOwner_SetParams(w->owner, &p);   /* flags every pair */
     w->update.n = 0;
-    for (i = 0; i < w->ndyn; i++)
+    for (i = 0; motion && i < w->ndyn; i++)
         if (!vrUpdate_Body(&w->update, w->dyn[i], w->t)) return -1;
     w->params_dirty = 0;
-    w->structure++;
+    w->structure++;                                  /* workers are made anew with them */
     return vrWorld_ApplyUpdate(w, &w->update);
 }
 

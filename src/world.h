@@ -38,7 +38,7 @@ struct vrWorld {
     double t_base;           /* frame times are t_base + k time_step, k frames since */
     long frames_base;        /* (summing time_step frame by frame would drift) */
     int started;             /* the pair set exists */
-    int params_dirty;        /* settings changed: re-anchor all at the next frame */
+    int params_dirty;        /* settings changed (world.c's PARAMS_*): for the next frame */
     int check_overlaps;      /* objects were added or moved: check before the next frame */
     long structure;          /* bumped when objects, shapes, masses or settings change */
     vrOwner *owner;          /* serial: one owner of every pair (NULL while workers run) */
