@@ -347,6 +347,13 @@ static void reindex(vrOwner *o)
         update_schedule(o, i);
         place(o, i);
     }
+    /* every pair was scheduled from its bodies' state now: a body that
+     * froze or thawed since the owner last heard must not look unchanged
+     * when it does (a ball put to rest, then a table deleted or made
+     * dynamic: its pairs with static bodies were left unscheduled, and it
+     * fell through the floor when it woke) */
+    for (i = 0; i < o->bodycap; i++)
+        if (o->body[i]) o->was_frozen[i] = (unsigned char)frozen(o->body[i]);
 }
 
 void vrOwner_DropBody(vrOwner *o, int id)

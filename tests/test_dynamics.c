@@ -857,6 +857,31 @@ static int test_a_support_made_static_holds_like_a_static_one(void)
     return 0;
 }
 
+/* A ball comes to rest on a table, and the table is deleted before the
+ * next frame: the ball wakes and falls onto the floor below (0.4 m), and
+ * lands on it: z = 0.1 + d / 2 or so, never below it.  (The owner had
+ * scheduled the ball's pairs while it rested, before it heard of the rest;
+ * then it took the wake for no change and left the ball's pair with the
+ * floor unscheduled, and the ball fell through the floor.) */
+static int test_a_ball_woken_by_a_deleted_table_lands_on_the_floor(void)
+{
+    vrWorld *w = new_world(0.05, 0.01, 9.8);
+    vrObjectId table, ball;
+    int k;
+    box(w, "floor", vec3_make(2, 2, 0.05), vec3_make(0, 0, -0.05), -1, 0);
+    table = box(w, "table", vec3_make(0.5, 0.5, 0.05), vec3_make(0, 0, 0.35), -1, 0);
+    ball = sphere(w, "ball", 0.1, vec3_make(0, 0, 0.505), vec3_make(0, 0, 0), 1, 0);
+    for (k = 0; k < 40 && state(w, ball).state != VR_STATE_REST; k++) ENSURE(step(w, 1) == 0);
+    ENSURE(state(w, ball).state == VR_STATE_REST);
+    ENSURE(vrWorld_DeleteObject(w, table) == 0);
+    ENSURE(step(w, 40) == 0);
+    printf("    the ball after the table went: z %.6f, %s\n", state(w, ball).position[2],
+           state(w, ball).state == VR_STATE_REST ? "at rest" : "not at rest");
+    ENSURE(state(w, ball).position[2] > 0.1 && state(w, ball).position[2] < 0.1 + 0.01 + 1e-9);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
 static void set_half_height(vrObjectDef *d, const void *arg) { d->size[2] = *(const double *)arg; }
 
 /* A box sliding on a table is made thinner mid-run, or the table is (an
@@ -1120,6 +1145,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_ball_on_a_knocked_block_wakes_and_falls);
     RUN_TEST(test_a_slanted_nudge_does_not_sink_a_supported_ball);
     RUN_TEST(test_a_support_made_static_holds_like_a_static_one);
+    RUN_TEST(test_a_ball_woken_by_a_deleted_table_lands_on_the_floor);
     RUN_TEST(test_a_box_or_table_made_thinner_mid_run_drops_the_box);
     RUN_TEST(test_sliding_over_flush_tables_feels_no_seam);
     RUN_TEST(test_a_real_step_still_stops_a_sliding_box);
