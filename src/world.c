@@ -741,6 +741,20 @@ int vrWorld_Ready(vrWorld *w, char *err, size_t n)
     return 0;
 }
 
+void vrWorld_RetireSgp(vrWorld *w)
+{
+    vrStats st;
+    memset(&st, 0, sizeof st);
+    vrSgp_Stats(w->sgp, &st);
+    w->retired.checks += st.checks;
+    w->retired.heap_pops += st.heap_pops;
+    w->retired.response.solves += st.klu_solves;
+    w->retired.response.refactors += st.klu_refactors;
+    w->retired.response.factors += st.klu_factors;
+    vrSgp_Free(w->sgp);
+    w->sgp = NULL;
+}
+
 /* serial or parallel, as the settings say */
 static int choose_owners(vrWorld *w, char *err, size_t n)
 {
@@ -751,18 +765,7 @@ static int choose_owners(vrWorld *w, char *err, size_t n)
         }
         return vrSgp_Sync(w, err, n);
     }
-    if (w->sgp) {
-        vrStats st;
-        memset(&st, 0, sizeof st);
-        vrSgp_Stats(w->sgp, &st);
-        w->retired.checks += st.checks;
-        w->retired.heap_pops += st.heap_pops;
-        w->retired.response.solves += st.klu_solves;
-        w->retired.response.refactors += st.klu_refactors;
-        w->retired.response.factors += st.klu_factors;
-        vrSgp_Free(w->sgp);
-        w->sgp = NULL;
-    }
+    if (w->sgp) vrWorld_RetireSgp(w);
     if (!w->owner && make_serial_owner(w) != 0) return fail_msg(err, n, "out of memory");
     return 0;
 }

@@ -296,6 +296,47 @@ static void six_objects(vrWorld *w)
     }
 }
 
+/* Workers made anew (an edit re-deals the pairs; another worker count, or
+ * none) start new owners whose counters start at 0: the stats keep what
+ * the old ones counted, so klu_solves still equals collisions (SPEC 1.3),
+ * and the bits are the serial run's */
+static int test_counts_and_bits_survive_new_workers(void)
+{
+    int gps[] = {2, 2, 3, 0}, parallel, k;
+    unsigned long long hash[2];
+    for (parallel = 0; parallel < 2; parallel++) {
+        vrWorld *w = vrWorld_Create();
+        vrStats st;
+        char *buf = NULL;
+        size_t len = 0;
+        FILE *f;
+        random_60(w);
+        for (k = 0; k < 4; k++) {
+            vrSettings s = *vrWorld_Settings(w);
+            vrObjectDef d;
+            s.gps = parallel ? gps[k] : 0;
+            snprintf(s.lcm_url, sizeof s.lcm_url, "memq://");
+            vrWorld_SetSettings(w, &s, NULL, 0);
+            vrWorld_GetObjectDef(w, 0, &d);
+            d.elasticity = 0.5 + 0.1 * k;        /* a new pair set for the workers */
+            vrWorld_SetObjectDef(w, 0, &d, NULL, 0);
+            ENSURE(vrWorld_Step(w, 15, NULL, 0) == 0);
+            vrWorld_GetStats(w, &st);
+            ENSURE_MSG(st.klu_solves == st.collisions, "%s, part %d: %lld solves, %lld collisions",
+                       parallel ? "workers" : "serial", k, st.klu_solves, st.collisions);
+        }
+        ENSURE(st.collisions > 10);
+        f = open_memstream(&buf, &len);
+        vrWorld_WriteDump(w, f);
+        fclose(f);
+        hash[parallel] = fnv(buf, len);
+        free(buf);
+        vrWorld_Destroy(w);
+    }
+    ENSURE(hash[0] == hash[1]);
+    return 0;
+}
+
 /* A table moved into a ball after `start` refuses the next frame (SPEC
  * 1.4), and every frame after it while they still overlap, serially and
  * with workers, even when an edit in between (the table's mass given
@@ -415,6 +456,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_foreign_and_malformed_messages_are_ignored);
     RUN_TEST(test_joint_supports_match_serial);
     RUN_TEST(test_an_overlap_made_by_an_edit_stops_every_start);
+    RUN_TEST(test_counts_and_bits_survive_new_workers);
     RUN_TEST(test_hand_started_workers_serve_a_ttl1_url);
     RUN_TEST(test_improved_distribution_meets_thesis_example);
     RUN_TEST(test_improved_distribution_needs_fewer_copies_on_random_60);

@@ -43,6 +43,9 @@
 
 enum { WAIT_EARLIEST, WAIT_UPDATE, WAIT_CANDIDATES };
 
+/* a worker's owner's counters (stats keys) */
+typedef struct vrGpCounts { long long checks, heap_pops, solves, refactors, factors; } vrGpCounts;
+
 typedef struct vrGpInfo {
     long long nonce;
     pid_t pid;                  /* forked workers; 0 otherwise */
@@ -52,7 +55,8 @@ typedef struct vrGpInfo {
     double t;
     long long order;
     int kind;
-    long long checks, heap_pops, solves, refactors, factors;
+    vrGpCounts now;             /* of its owner, as it last said */
+    vrGpCounts before;          /* of the owners it had before: a setup makes a new one */
     int copies, pairs;
     vrBuf setup;                /* its setup during a setup round */
 } vrGpInfo;
@@ -125,8 +129,8 @@ static void on_earliest(const lcm_recv_buf_t *rb, const char *ch, void *user)
         g->t = m.t;
         g->order = m.order;
         g->kind = m.kind;
-        g->checks = m.checks;
-        g->heap_pops = m.heap_pops;
+        g->now.checks = m.checks;
+        g->now.heap_pops = m.heap_pops;
         g->copies = m.copies;
         note_overlaps(s, &m);
         if (m.error[0] && !s->error[0]) snprintf(s->error, sizeof s->error, "worker %d: %s", m.gp, m.error);
@@ -151,9 +155,9 @@ static void on_update(const lcm_recv_buf_t *rb, const char *ch, void *user)
             s->malformed++;
         } else {
             g->replied = 1;
-            g->solves = m.solves;
-            g->refactors = m.refactors;
-            g->factors = m.factors;
+            g->now.solves = m.solves;
+            g->now.refactors = m.refactors;
+            g->now.factors = m.factors;
         }
     }
     vroc_update_t_decode_cleanup(&m);
@@ -468,11 +472,25 @@ static int delivered(vrWorld *w, vrSgp *s)
     return r;
 }
 
+/* a setup gives every worker a new owner, whose counters start at 0: the
+ * stats keep what the old ones counted */
+static void retire_counts(vrSgp *s)
+{
+    int g;
+    for (g = 0; g < s->n; g++) {
+        vrGpCounts *b = &s->gp[g].before, *c = &s->gp[g].now;
+        b->checks += c->checks, b->heap_pops += c->heap_pops, b->solves += c->solves;
+        b->refactors += c->refactors, b->factors += c->factors;
+        memset(c, 0, sizeof *c);
+    }
+}
+
 static int setup_all(vrWorld *w, vrSgp *s, char *err, size_t n)
 {
     for (;;) {
         int *pi = NULL, *pj = NULL, g, died;
         vrDeal d = {NULL, 0};
+        retire_counts(s);
         if (alive_count(s) == 0) return snprintf(err, n, "all %d workers died; set gps = 0 to go on serially", s->n), -1;
         s->seq++;
         s->error[0] = 0;
@@ -624,8 +642,8 @@ int vrSgp_Sync(vrWorld *w, char *err, size_t n)
 {
     vrSgp *s = w->sgp;
     if (s && (s->n != w->s.gps || strcmp(s->url, w->s.lcm_url) != 0)) {
-        vrSgp_Free(s);
-        w->sgp = s = NULL;
+        vrWorld_RetireSgp(w);            /* its counts stay in the stats */
+        s = NULL;
     }
     if (!s) {
         w->sgp = s = open_sgp(w, err, n);
@@ -846,14 +864,14 @@ void vrSgp_Stats(const vrSgp *s, vrStats *st)
     st->malformed = s->malformed;
     for (i = 0; i < s->n && i < 64; i++) {
         const vrGpInfo *g = &s->gp[i];
-        st->gp_checks[i] = g->checks;
+        st->gp_checks[i] = g->before.checks + g->now.checks;
         st->gp_copies[i] = g->alive ? g->copies : 0;
         st->gp_pairs[i] = g->alive ? g->pairs : 0;
-        st->checks += g->checks;
-        st->heap_pops += g->heap_pops;
-        st->klu_solves += g->solves;
-        st->klu_refactors += g->refactors;
-        st->klu_factors += g->factors;
+        st->checks += g->before.checks + g->now.checks;
+        st->heap_pops += g->before.heap_pops + g->now.heap_pops;
+        st->klu_solves += g->before.solves + g->now.solves;
+        st->klu_refactors += g->before.refactors + g->now.refactors;
+        st->klu_factors += g->before.factors + g->now.factors;
         if (g->alive) st->copies += g->copies;
     }
 }
