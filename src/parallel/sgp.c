@@ -79,6 +79,7 @@ struct vrSgp {
     int frame_open;
     vrUpdate snap, snap_pending;   /* the frame start, to redo the frame */
     long long snap_collisions;
+    vrGpCounts snap_counts[MAX_GPS];  /* each worker's counts then (before + now) */
     long long requests, received, foreign, malformed;
     lcm_subscription_t *subs[4];
 };
@@ -664,6 +665,10 @@ static int recover(vrWorld *w, char *err, size_t n)
     for (i = 0; i < s->snap.n; i++)
         vrBody_Apply(&w->obj[s->snap.body[i].id]->body, &s->snap.body[i], &f);
     w->collisions = s->snap_collisions;
+    for (i = 0; i < s->n; i++) {   /* the frame is redone: what it counted is counted again */
+        s->gp[i].before = s->snap_counts[i];
+        memset(&s->gp[i].now, 0, sizeof s->gp[i].now);
+    }
     w->pending.n = 0;
     if (append_states(&w->pending, &s->snap_pending) != 0) return snprintf(err, n, "out of memory"), -1;
     s->snap_pending.n = 0;
@@ -678,6 +683,13 @@ static void snapshot(vrWorld *w, vrSgp *s)
     for (i = 0; i < w->nobj; i++)
         if (w->obj[i] && w->obj[i]->live) anchor_of(&s->snap, &w->obj[i]->body);
     s->snap_collisions = w->collisions;
+    for (i = 0; i < s->n; i++) {
+        const vrGpCounts *b = &s->gp[i].before, *c = &s->gp[i].now;
+        vrGpCounts *k = &s->snap_counts[i];
+        k->checks = b->checks + c->checks, k->heap_pops = b->heap_pops + c->heap_pops;
+        k->solves = b->solves + c->solves, k->refactors = b->refactors + c->refactors;
+        k->factors = b->factors + c->factors;
+    }
 }
 
 static int encode_frame_start(vrWorld *w, vrSgp *s, const vrGrid *g, int allow, int check)

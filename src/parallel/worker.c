@@ -38,7 +38,8 @@ struct vrWorker {
     int *ids;
     int idcap;
     long frames;
-    int kill_gp, kill_frame;      /* VROC_FAULT_KILL=gp:frame */
+    int kill_gp, kill_frame;      /* VROC_FAULT_KILL=gp:frame[:round] */
+    int kill_round, rounds;       /* ...at that frame's round-th advance (0: at its start) */
     int silent, done;
     double last_hello;
     lcm_subscription_t *subs[6];
@@ -229,10 +230,11 @@ static void on_setup(const lcm_recv_buf_t *rb, const char *ch, void *user)
     vroc_setup_t_decode_cleanup(&m);
 }
 
-/* VROC_FAULT_KILL=gp:frame — the worker dies at that frame's start (tests) */
+/* VROC_FAULT_KILL=gp:frame[:round] — the worker dies at that frame's
+ * start, or at its round-th advance, in the middle of the frame (tests) */
 static void maybe_die(vrWorker *k)
 {
-    if (k->gp != k->kill_gp || k->frames != k->kill_frame) return;
+    if (k->gp != k->kill_gp || k->frames != k->kill_frame || k->rounds != k->kill_round) return;
     if (k->forked) raise(SIGKILL);
     k->silent = 1;                       /* in one process: fall silent instead */
 }
@@ -246,6 +248,7 @@ static void on_frame(const lcm_recv_buf_t *rb, const char *ch, void *user)
     if (k->owner && fresh(k, m.run, m.seq) && isfinite(m.t)) {
         if (!m.check) {
             k->frames++;
+            k->rounds = 0;
             maybe_die(k);
         }
         if (!k->silent) {
@@ -268,7 +271,10 @@ static void on_advance(const lcm_recv_buf_t *rb, const char *ch, void *user)
     vrOwnerStats os;
     (void)ch;
     if (vroc_advance_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
-    if (!k->owner || !fresh(k, m.run, m.seq) || m.responder != k->gp) return;
+    if (!k->owner || !fresh(k, m.run, m.seq)) return;
+    k->rounds++;
+    maybe_die(k);
+    if (k->silent || m.responder != k->gp) return;
     if (!k->has_first || k->first.order != m.order || k->first.t != m.t) return;
     vrOwner_Advance(k->owner, m.t);
     k->scratch.n = 0;
@@ -365,7 +371,8 @@ static void parse_kill(vrWorker *k)
 {
     const char *v = getenv("VROC_FAULT_KILL");
     k->kill_gp = k->kill_frame = -1;
-    if (v && sscanf(v, "%d:%d", &k->kill_gp, &k->kill_frame) != 2) k->kill_gp = k->kill_frame = -1;
+    k->kill_round = 0;
+    if (v && sscanf(v, "%d:%d:%d", &k->kill_gp, &k->kill_frame, &k->kill_round) < 2) k->kill_gp = k->kill_frame = -1;
 }
 
 vrWorker *vrWorker_Create(vrLink *link, long long nonce, int forked)
