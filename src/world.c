@@ -160,6 +160,7 @@ vrWorld *vrWorld_Create(void)
     vrWorld *w = calloc(1, sizeof *w);
     if (!w) return NULL;
     w->s = vrSettings_Default();
+    w->instant_t = -INFINITY;
     vrUpdate_Init(&w->update);
     vrUpdate_Init(&w->pending);
     vrRandom_Seed(w);
@@ -218,6 +219,8 @@ void vrWorld_Restart(vrWorld *w)
     memset(&w->retired, 0, sizeof w->retired);
     w->random_next = 0;
     w->params_dirty = 0;
+    w->instant = 0;
+    w->instant_t = -INFINITY;
     vrRandom_Seed(w);
 }
 
@@ -990,9 +993,12 @@ static void reach_changed(vrWorld *w, const vrUpdate *up, const vrParams *p)
 /* Runs [t, t + time_step]: ARCHITECTURE "the loop, once". */
 static int run_frame(vrWorld *w, char *err, size_t n)
 {
-    double T = w->t_base + (double)(w->frames + 1 - w->frames_base) * w->s.time_step, ts = w->t, instant_t = -INFINITY;
+    double T = w->t_base + (double)(w->frames + 1 - w->frames_base) * w->s.time_step, ts = w->t;
     vrParams p = vrWorld_Params(w);
-    int instant = 0;
+    /* the responses at the last instant so far: a frame ending at an
+     * instant that had its VR_INSTANT_MAX does not give it more */
+    double instant_t = w->instant_t;
+    int instant = w->instant;
     w->subframes = 0;
     vrReach_Frame(&w->reach, w->dyn, w->ndyn, ts, T, &p.flight);
     for (;;) {
@@ -1027,12 +1033,14 @@ static int run_frame(vrWorld *w, char *err, size_t n)
     restart:                 /* a worker died: the frame again from its start */
         ts = w->t;
         vrReach_Frame(&w->reach, w->dyn, w->ndyn, ts, T, &p.flight);
-        instant = 0;
-        instant_t = -INFINITY;
+        instant = w->instant;
+        instant_t = w->instant_t;
         w->subframes = 0;
     }
     w->t = T;
     w->frames++;
+    w->instant = instant;
+    w->instant_t = instant_t;
     w->update.n = 0;
     if (vrRest_FrameEnd(w, &w->update) != 0 || vrWorld_ApplyUpdate(w, &w->update) != 0)
         return fail_msg(err, n, "out of memory");

@@ -38,6 +38,8 @@ struct vrWorld {
     double t_base;           /* frame times are t_base + k time_step, k frames since */
     long frames_base;        /* (summing time_step frame by frame would drift) */
     int started;             /* the pair set exists */
+    int instant;             /* responses at instant_t, the last event's time (SPEC 3.1's cap) */
+    double instant_t;
     int params_dirty;        /* settings changed (world.c's PARAMS_*): for the next frame */
     int check_overlaps;      /* objects were added or moved: check before the next frame */
     long structure;          /* bumped when objects, shapes, masses or settings change */
