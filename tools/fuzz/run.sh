@@ -1,0 +1,34 @@
+#!/bin/sh
+# tools/fuzz/run.sh FROM TO [VROC] — runs tools/fuzz/edits.py's scripts for
+# seeds FROM..TO in every mode and reports seeds whose dumps differ, and
+# crashes, sanitizer reports or hangs (VROC: e.g. build/asan/vroc; default
+# build/rel/vroc).  The udp mode needs a private network namespace: run as
+# root, it makes one (unshare -n), as tests/scenes_parallel.sh does.
+# Optional developer tool (python3); not part of `make check`.
+set -u
+if [ -z "${VROC_NETNS:-}" ]; then
+    exec unshare -n sh -c 'ip link set lo up && ip link set lo multicast on &&
+        ip route add 224.0.0.0/4 dev lo && VROC_NETNS=1 exec sh "$0" "$@"' "$0" "$@" ||
+        { echo "cannot make a private network namespace (unshare -n needs root)"; exit 1; }
+fi
+here=$(cd "$(dirname "$0")" && pwd)
+vroc=$(cd "$(dirname "${3:-build/rel/vroc}")" && pwd)/$(basename "${3:-build/rel/vroc}")
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+export LSAN_OPTIONS="suppressions=$here/../../tests/lsan.supp:print_suppressions=0"
+bad=0
+for s in $(seq "$1" "$2"); do
+    for mode in serial noheap udp switch; do
+        python3 "$here/edits.py" "$s" "$mode" >"$tmp/$mode.cmd"
+        timeout 300 "$vroc" -q "$tmp/$mode.cmd" >"$tmp/$mode.out" 2>"$tmp/$mode.err"
+        rc=$?
+        if [ "$rc" -gt 1 ] || grep -q 'Sanitizer\|runtime error' "$tmp/$mode.err"; then
+            echo "seed $s $mode: exit $rc $(grep -m1 'ERROR\|runtime error' "$tmp/$mode.err")"; bad=$((bad + 1))
+        fi
+        if [ "$mode" != serial ] && ! cmp -s "$tmp/serial.out" "$tmp/$mode.out"; then
+            echo "seed $s: $mode differs from serial"; bad=$((bad + 1))
+        fi
+    done
+done
+echo "seeds $1..$2: $bad problems"
+[ "$bad" = 0 ]
