@@ -473,16 +473,25 @@ static int delivered(vrWorld *w, vrSgp *s)
     return r;
 }
 
+/* all that worker g's owners counted */
+static vrGpCounts counts_of(const vrSgp *s, int g)
+{
+    const vrGpCounts *b = &s->gp[g].before, *c = &s->gp[g].now;
+    vrGpCounts t;
+    t.checks = b->checks + c->checks, t.heap_pops = b->heap_pops + c->heap_pops;
+    t.solves = b->solves + c->solves, t.refactors = b->refactors + c->refactors;
+    t.factors = b->factors + c->factors;
+    return t;
+}
+
 /* a setup gives every worker a new owner, whose counters start at 0: the
  * stats keep what the old ones counted */
 static void retire_counts(vrSgp *s)
 {
     int g;
     for (g = 0; g < s->n; g++) {
-        vrGpCounts *b = &s->gp[g].before, *c = &s->gp[g].now;
-        b->checks += c->checks, b->heap_pops += c->heap_pops, b->solves += c->solves;
-        b->refactors += c->refactors, b->factors += c->factors;
-        memset(c, 0, sizeof *c);
+        s->gp[g].before = counts_of(s, g);
+        memset(&s->gp[g].now, 0, sizeof s->gp[g].now);
     }
 }
 
@@ -683,13 +692,7 @@ static void snapshot(vrWorld *w, vrSgp *s)
     for (i = 0; i < w->nobj; i++)
         if (w->obj[i] && w->obj[i]->live) anchor_of(&s->snap, &w->obj[i]->body);
     s->snap_collisions = w->collisions;
-    for (i = 0; i < s->n; i++) {
-        const vrGpCounts *b = &s->gp[i].before, *c = &s->gp[i].now;
-        vrGpCounts *k = &s->snap_counts[i];
-        k->checks = b->checks + c->checks, k->heap_pops = b->heap_pops + c->heap_pops;
-        k->solves = b->solves + c->solves, k->refactors = b->refactors + c->refactors;
-        k->factors = b->factors + c->factors;
-    }
+    for (i = 0; i < s->n; i++) s->snap_counts[i] = counts_of(s, i);
 }
 
 static int encode_frame_start(vrWorld *w, vrSgp *s, const vrGrid *g, int allow, int check)
@@ -876,14 +879,15 @@ void vrSgp_Stats(const vrSgp *s, vrStats *st)
     st->malformed = s->malformed;
     for (i = 0; i < s->n && i < 64; i++) {
         const vrGpInfo *g = &s->gp[i];
-        st->gp_checks[i] = g->before.checks + g->now.checks;
+        vrGpCounts c = counts_of(s, i);
+        st->gp_checks[i] = c.checks;
         st->gp_copies[i] = g->alive ? g->copies : 0;
         st->gp_pairs[i] = g->alive ? g->pairs : 0;
-        st->checks += g->before.checks + g->now.checks;
-        st->heap_pops += g->before.heap_pops + g->now.heap_pops;
-        st->klu_solves += g->before.solves + g->now.solves;
-        st->klu_refactors += g->before.refactors + g->now.refactors;
-        st->klu_factors += g->before.factors + g->now.factors;
+        st->checks += c.checks;
+        st->heap_pops += c.heap_pops;
+        st->klu_solves += c.solves;
+        st->klu_refactors += c.refactors;
+        st->klu_factors += c.factors;
         if (g->alive) st->copies += g->copies;
     }
 }
