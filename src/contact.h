@@ -96,9 +96,23 @@ int vrContact_Region(const vrShape *a, const vrPose *pa, const vrShape *b, const
 int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
                     vrWalkCache *cache, double *dist, vec3 *n);
 /* How far from a threshold the walk's distance may decide: over a thousand
- * times the largest difference from vrContact_Distance the tests find
- * (6e-15 m, objects up to 20 m from the origin; they fail above 1e-13). */
+ * times the largest difference from vrContact_Distance the tests find on
+ * random poses (6e-15 m, objects up to 20 m from the origin; they fail
+ * above 1e-13).  Faces within 1e-9 of parallel to a long edge differ more
+ * (VR_QUICK_CLEAR below); vrContact_Within may then answer by the walk
+ * where the canonical distance would not, the same with the heap and
+ * without, so runs keep their bits. */
 #define VR_QUICK_TOL 1e-11
+
+/* How far below the walk's distance the canonical one can be.  For a
+ * face, the canonical distance is the other feature's lowest vertex over
+ * the face's plane; a face within SUPPORT_TOL (1e-9 m) of parallel to a
+ * long edge is measured at the edge's ends, which may lie metres beyond
+ * the face: a table's 6 m edge under a tilted 9 cm box face gave 8e-11 m
+ * less than the true distance the walk finds, and a 6 mm facet against a
+ * 6 m edge could give 1e-6 m.  A look that only wants to know that a pair
+ * is clear of the envelope trusts the walk this far from it. */
+#define VR_QUICK_CLEAR 1e-5
 
 /* Is the distance <= d?  The walk's own distance decides when it is more
  * than VR_QUICK_TOL from d (the canonical answer is then the same), else

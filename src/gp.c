@@ -943,7 +943,9 @@ static int cheap_look_allowed(const vrOwner *o, const vrPair *p)
 }
 
 /* the walk's distance when it is clear of the envelope: outside, no event,
- * and a key from that distance (VR_QUICK_TOL below it) */
+ * and a key from that distance (VR_QUICK_CLEAR below it: the canonical
+ * distance a full look measures may be that much less; heap = 0 makes the
+ * full look, and the two must agree) */
 static int clear_by_walk(vrOwner *o, int pi, double t)
 {
     vrPair *p = &o->pair[pi];
@@ -956,9 +958,9 @@ static int clear_by_walk(vrOwner *o, int pi, double t)
     vrBody_Pose(B, t, &pb);
     if (vrContact_Quick(&A->shape, &pa, &B->shape, &pb, &p->cache, &dist, &n) != 0) return 0;
     o->checks++;
-    if (dist <= o->p.d + VR_QUICK_TOL) return 0;
+    if (dist <= o->p.d + VR_QUICK_CLEAR) return 0;
     p->t_check = t;
-    settle(o, pi, 0, pair_key(o, p, t, dist - VR_QUICK_TOL, n));
+    settle(o, pi, 0, pair_key(o, p, t, dist - VR_QUICK_CLEAR, n));
     return 1;
 }
 

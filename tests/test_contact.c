@@ -239,6 +239,39 @@ static int test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance(
     return 0;
 }
 
+/* A box tilted (by a turn about x) so that its bottom face hangs over a
+ * floor's 6 m edge, within 1e-9 of parallel to it: the walk finds the true
+ * distance (the edge to the face's plane where it passes under the face,
+ * 0.01175722934996 m by 40-digit arithmetic), the canonical rule measures
+ * the edge's ends against the face's plane, metres beyond the face, 8e-11
+ * m less.  More than VR_QUICK_TOL, so a look that only asks "clear of the
+ * envelope?" trusts the walk VR_QUICK_CLEAR from it (a fuzzed scene's box
+ * sliding off a floor differed with the heap and without, before). */
+static int test_walk_and_canonical_distance_under_a_long_edge(void)
+{
+    Fix floor, box_;
+    vrPose pf, pb;
+    vrWalkCache c1, c2;
+    vrContact c;
+    double dq;
+    vec3 nq;
+    ENSURE(box(&floor, 3, 3, 0.1) == 0 && box(&box_, 0.0436547, 0.0926111, 0.0936551) == 0);
+    pf = identity_at(0, 0, -0.1);
+    pb = vrPose_make(vec3_make(2.38880385, 2.9394999, 0.11159634646910951),
+                     quat_normalize(quat_make(0.7445025140004801, 0.667619657175375, -4.4678705179990175e-12,
+                                              6.130485008526421e-12)));
+    memset(&c1, 0, sizeof c1);
+    memset(&c2, 0, sizeof c2);
+    ENSURE(vrContact_Quick(&floor.s, &pf, &box_.s, &pb, &c1, &dq, &nq) == 0);
+    ENSURE(vrContact_Distance(&floor.s, &pf, &box_.s, &pb, &c2, &c) == 0);
+    printf("    walk %.17g, canonical %.17g: %.3g m apart\n", dq, c.dist, dq - c.dist);
+    ENSURE_NEAR(dq, 0.01175722934996, 1e-13);
+    ENSURE(dq - c.dist > VR_QUICK_TOL && dq - c.dist < VR_QUICK_CLEAR / 1000);
+    unfix(&floor);
+    unfix(&box_);
+    return 0;
+}
+
 /* Parallel faces, stacked cubes, parallel and crossed edges, a pole over a
  * face: Region gives the same bits from every start pair of features. */
 static int test_region_is_bit_identical_from_every_start_cache(void)
@@ -645,6 +678,7 @@ int main(int argc, char **argv)
     test_init(argc, argv);
     RUN_TEST(test_distance_is_brute_force_distance_and_independent_of_cache);
     RUN_TEST(test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance);
+    RUN_TEST(test_walk_and_canonical_distance_under_a_long_edge);
     RUN_TEST(test_region_is_bit_identical_from_every_start_cache);
     RUN_TEST(test_region_box_flat_on_table_is_its_four_bottom_corners);
     RUN_TEST(test_region_overhanging_box_is_clipped_to_the_table);
