@@ -7,6 +7,8 @@ depend on SEED alone.  MODE only decides how it is run:
   serial  serially, with the heap
   noheap  serially, without the heap
   udp     with 2 workers over UDP multicast (run it in a private namespace)
+  kill    with 3 workers over UDP, one killed mid-run (run.sh sets
+          VROC_FAULT_KILL from the seed)
   switch  the heap, the worker count (memq://) and the distribution
           switched at random between steps
 Every mode must print the same dump (SPEC 3.2, 5).  tools/fuzz/run.sh
@@ -100,7 +102,7 @@ def edit():
         P("cube table\n mass = %g" % r.choice([-1, 0.5, 3]))
 
 
-P({"serial": "", "noheap": "heap = 0", "udp": "gps = 2", "switch": "lcm_url = memq://"}[mode])
+P({"serial": "", "noheap": "heap = 0", "udp": "gps = 2", "kill": "gps = 3", "switch": "lcm_url = memq://"}[mode])
 P("time_step = %g\ncollision_dist = %g\nmax_frames = 0\ngravity" % (r.choice([0.02, 0.05]), r.choice([0.005, 0.01])))
 P("cube floor\n size = (3, 3, 0.1)\n translate = (0, 0, -0.1)\n mass = -1")
 P("cube table\n size = (1, 0.8, 0.05)\n translate = (0, 0, 0.5)\n mass = -1\n elasticity = 0.3")

@@ -18,9 +18,11 @@ trap 'rm -rf "$tmp"' EXIT
 export LSAN_OPTIONS="suppressions=$here/../../tests/lsan.supp:print_suppressions=0"
 bad=0
 for s in $(seq "$1" "$2"); do
-    for mode in serial noheap udp switch; do
+    for mode in serial noheap udp kill switch; do
         python3 "$here/edits.py" "$s" "$mode" >"$tmp/$mode.cmd"
-        timeout 300 "$vroc" -q "$tmp/$mode.cmd" >"$tmp/$mode.out" 2>"$tmp/$mode.err"
+        kill=""
+        [ "$mode" = kill ] && kill="1:$((s % 7 + 2)):$((s % 3))"   # worker 1, a frame 2..8, a round 0..2
+        VROC_FAULT_KILL=$kill timeout 300 "$vroc" -q "$tmp/$mode.cmd" >"$tmp/$mode.out" 2>"$tmp/$mode.err"
         rc=$?
         if [ "$rc" -gt 1 ] || grep -q 'Sanitizer\|runtime error' "$tmp/$mode.err"; then
             echo "seed $s $mode: exit $rc $(grep -m1 'ERROR\|runtime error' "$tmp/$mode.err")"; bad=$((bad + 1))
