@@ -47,15 +47,35 @@ static void random_60(vrWorld *w)
     vrWorld_AddRandom(w, 60, NULL, 0);
 }
 
+/* the hash of the world's dump */
+static unsigned long long dump_hash(vrWorld *w)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    unsigned long long h;
+    FILE *f = open_memstream(&buf, &len);
+    vrWorld_WriteDump(w, f);
+    fclose(f);
+    h = fnv(buf, len);
+    free(buf);
+    return h;
+}
+
+/* a new object of definition d */
+static vrObjectId put(vrWorld *w, const char *name, vrObjectType type, const vrObjectDef *d)
+{
+    vrObjectId id;
+    vrWorld_CreateObject(w, name, type, &id, NULL, 0);
+    vrWorld_SetObjectDef(w, id, d, NULL, 0);
+    return id;
+}
+
 /* the hash of the dump after `frames` frames with `gps` workers */
 static vrRun run(vrScene scene, int gps, const char *url, vrDistribution dist, long frames)
 {
     vrRun r;
     vrWorld *w = vrWorld_Create();
     vrSettings s;
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f;
     memset(&r, 0, sizeof r);
     scene(w);
     s = *vrWorld_Settings(w);
@@ -65,11 +85,7 @@ static vrRun run(vrScene scene, int gps, const char *url, vrDistribution dist, l
     vrWorld_SetSettings(w, &s, NULL, 0);
     r.failed = vrWorld_Step(w, frames, r.err, sizeof r.err) != 0;
     vrWorld_GetStats(w, &r.stats);
-    f = open_memstream(&buf, &len);
-    vrWorld_WriteDump(w, f);
-    fclose(f);
-    r.hash = fnv(buf, len);
-    free(buf);
+    r.hash = dump_hash(w);
     vrWorld_Destroy(w);
     return r;
 }
@@ -319,10 +335,7 @@ static int test_the_instant_cap_holds_across_frames(void)
         vrWorld *w = vrWorld_Create();
         vrSettings s = *vrWorld_Settings(w);
         vrObjectDef floor = vrObjectDef_Default(VR_CUBE), plate = floor, ball = vrObjectDef_Default(VR_SPHERE), far;
-        vrObjectId id, spare;
-        char *buf = NULL;
-        size_t len = 0;
-        FILE *f;
+        vrObjectId spare;
         int k;
         s.gps = parallel ? 2 : 0;
         snprintf(s.lcm_url, sizeof s.lcm_url, "memq://");
@@ -335,24 +348,16 @@ static int test_the_instant_cap_holds_across_frames(void)
         ball.mass_set = 1;
         far = ball;
         far.translate[0] = 2.5, far.translate[2] = 0.11, far.mass = 1;
-        vrWorld_CreateObject(w, "floor", VR_CUBE, &id, NULL, 0);
-        vrWorld_SetObjectDef(w, id, &floor, NULL, 0);
-        vrWorld_CreateObject(w, "plate", VR_CUBE, &id, NULL, 0);
-        vrWorld_SetObjectDef(w, id, &plate, NULL, 0);
-        vrWorld_CreateObject(w, "ball", VR_SPHERE, &id, NULL, 0);
-        vrWorld_SetObjectDef(w, id, &ball, NULL, 0);
-        vrWorld_CreateObject(w, "spare", VR_SPHERE, &spare, NULL, 0);
-        vrWorld_SetObjectDef(w, spare, &far, NULL, 0);
+        put(w, "floor", VR_CUBE, &floor);
+        put(w, "plate", VR_CUBE, &plate);
+        put(w, "ball", VR_SPHERE, &ball);
+        spare = put(w, "spare", VR_SPHERE, &far);
         for (k = 0; k < 20; k++) {
             far.elasticity = k % 2 ? 0.5 : 0.6;      /* a new pair set for the workers, no new motion */
             vrWorld_SetObjectDef(w, spare, &far, NULL, 0);
             ENSURE(vrWorld_Step(w, 1, NULL, 0) == 0);
         }
-        f = open_memstream(&buf, &len);
-        vrWorld_WriteDump(w, f);
-        fclose(f);
-        hash[parallel] = fnv(buf, len);
-        free(buf);
+        hash[parallel] = dump_hash(w);
         vrWorld_Destroy(w);
     }
     ENSURE(hash[0] == hash[1]);
@@ -370,9 +375,6 @@ static int test_counts_and_bits_survive_new_workers(void)
     for (parallel = 0; parallel < 2; parallel++) {
         vrWorld *w = vrWorld_Create();
         vrStats st;
-        char *buf = NULL;
-        size_t len = 0;
-        FILE *f;
         random_60(w);
         for (k = 0; k < 4; k++) {
             vrSettings s = *vrWorld_Settings(w);
@@ -389,11 +391,7 @@ static int test_counts_and_bits_survive_new_workers(void)
                        parallel ? "workers" : "serial", k, st.klu_solves, st.collisions);
         }
         ENSURE(st.collisions > 10);
-        f = open_memstream(&buf, &len);
-        vrWorld_WriteDump(w, f);
-        fclose(f);
-        hash[parallel] = fnv(buf, len);
-        free(buf);
+        hash[parallel] = dump_hash(w);
         vrWorld_Destroy(w);
     }
     ENSURE(hash[0] == hash[1]);
@@ -413,7 +411,7 @@ static int test_an_overlap_made_by_an_edit_stops_every_start(void)
         vrWorld *w = vrWorld_Create();
         vrSettings s = *vrWorld_Settings(w);
         vrObjectDef t = vrObjectDef_Default(VR_CUBE), b = vrObjectDef_Default(VR_SPHERE);
-        vrObjectId table, ball;
+        vrObjectId table;
         char err[256] = "";
         int k;
         s.gps = gps;
@@ -424,10 +422,8 @@ static int test_an_overlap_made_by_an_edit_stops_every_start(void)
         vrWorld_SetSettings(w, &s, NULL, 0);
         t.size[0] = 1, t.size[1] = 0.8, t.size[2] = 0.05, t.translate[2] = 0.5, t.mass = -1, t.mass_set = 1;
         b.radius = 0.1, b.translate[2] = 1;
-        vrWorld_CreateObject(w, "table", VR_CUBE, &table, NULL, 0);
-        vrWorld_SetObjectDef(w, table, &t, NULL, 0);
-        vrWorld_CreateObject(w, "ball", VR_SPHERE, &ball, NULL, 0);
-        vrWorld_SetObjectDef(w, ball, &b, NULL, 0);
+        table = put(w, "table", VR_CUBE, &t);
+        put(w, "ball", VR_SPHERE, &b);
         ENSURE(vrWorld_Step(w, 1, err, sizeof err) == 0);
         t.translate[2] = 0.95;
         vrWorld_SetObjectDef(w, table, &t, NULL, 0);
