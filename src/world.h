@@ -96,14 +96,14 @@ int vrWorld_Ready(vrWorld *w, char *err, size_t n);
  * its state is pending, or an overlap check is owed, so that a pair of it
  * is evaluated afresh */
 unsigned char *vrWorld_PendingMarks(const vrWorld *w);
+/* frees the SGP and its workers, their counts kept in the stats */
+void vrWorld_RetireSgp(vrWorld *w);
 
 /* parallel/sgp.c */
 extern const vrOwnerSet vrSgp_Owners;
 /* starts or re-sets the workers as the settings and objects require */
 int vrSgp_Sync(vrWorld *w, char *err, size_t n);
 void vrSgp_Free(struct vrSgp *s);
-/* frees the SGP and its workers, their counts kept in the stats */
-void vrWorld_RetireSgp(vrWorld *w);
 void vrSgp_Stats(const struct vrSgp *s, vrStats *st);
 
 /* rest.c */

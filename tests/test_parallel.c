@@ -228,25 +228,21 @@ static void planks(vrWorld *w)
     s.force_mag = 9.8;
     vrWorld_SetSettings(w, &s, NULL, 0);
     for (i = 0; i < 4; i++) {
-        vrObjectId id;
         vrObjectDef d = vrObjectDef_Default(VR_CUBE);
         char name[16];
         d.size[0] = 0.2; d.size[1] = 0.2; d.size[2] = 0.5;
         d.translate[0] = 3.0 * i - 0.6; d.translate[2] = 0.5;
         d.mass = -1; d.mass_set = 1;
         snprintf(name, sizeof name, "l%d", i);
-        vrWorld_CreateObject(w, name, VR_CUBE, &id, NULL, 0);
-        vrWorld_SetObjectDef(w, id, &d, NULL, 0);
+        put(w, name, VR_CUBE, &d);
         d.translate[0] = 3.0 * i + 0.6;
         snprintf(name, sizeof name, "r%d", i);
-        vrWorld_CreateObject(w, name, VR_CUBE, &id, NULL, 0);
-        vrWorld_SetObjectDef(w, id, &d, NULL, 0);
+        put(w, name, VR_CUBE, &d);
         d.size[0] = 0.7; d.size[1] = 0.1; d.size[2] = 0.02;
         d.translate[0] = 3.0 * i + 0.02 * (i + 1); d.translate[2] = 1.3 + 0.1 * i;
         d.mass = 1; d.elasticity = 0.3;
         snprintf(name, sizeof name, "p%d", i);
-        vrWorld_CreateObject(w, name, VR_CUBE, &id, NULL, 0);
-        vrWorld_SetObjectDef(w, id, &d, NULL, 0);
+        put(w, name, VR_CUBE, &d);
     }
 }
 
@@ -308,14 +304,12 @@ static void six_objects(vrWorld *w)
 {
     int i;
     for (i = 0; i < 6; i++) {
-        vrObjectId id;
         vrObjectDef d = vrObjectDef_Default(VR_SPHERE);
         char name[16];
         snprintf(name, sizeof name, "o%d", i);
         d.radius = 0.1;
         d.translate[0] = 2.0 * i;
-        vrWorld_CreateObject(w, name, VR_SPHERE, &id, NULL, 0);
-        vrWorld_SetObjectDef(w, id, &d, NULL, 0);
+        put(w, name, VR_SPHERE, &d);
     }
 }
 
@@ -471,7 +465,6 @@ static void drifting(vrWorld *w)
 {
     int i;
     for (i = 0; i < n_apart; i++) {
-        vrObjectId id;
         vrObjectDef d = vrObjectDef_Default(VR_SPHERE);
         char name[16];
         snprintf(name, sizeof name, "s%d", i);
@@ -479,8 +472,7 @@ static void drifting(vrWorld *w)
         d.translate[0] = 3.0 * (i % 20);
         d.translate[1] = 3.0 * (i / 20);
         d.linear_vel[2] = 0.1;
-        vrWorld_CreateObject(w, name, VR_SPHERE, &id, NULL, 0);
-        vrWorld_SetObjectDef(w, id, &d, NULL, 0);
+        put(w, name, VR_SPHERE, &d);
     }
 }
 
