@@ -681,10 +681,11 @@ static void event_query(vrOwner *o, vrPair *p, double t, vrPose *pa, vrPose *pb,
  * but leaves only ten times the rounding seen: not taken. */
 #define BOUND_TOL 1e-12
 
-/* the bisection's test: is the pair within d at t?  When what was measured
- * can bound the distance nearby (a gap and closest points), *near gets
- * those bounds for times in [lo, hi]. */
-static int within_d(vrOwner *o, vrPair *p, double t, double lo, double hi, vrDistBound *near)
+/* the bisection's test: is the pair's distance at t at most level (d: an
+ * impact; 0: touching)?  When what was measured can bound the distance
+ * nearby (a gap and closest points), *near gets those bounds for times in
+ * [lo, hi]. */
+static int within(vrOwner *o, vrPair *p, double t, double level, double lo, double hi, vrDistBound *near)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
     vrPose pa, pb;
@@ -693,30 +694,30 @@ static int within_d(vrOwner *o, vrPair *p, double t, double lo, double hi, vrDis
     vrBody_ShapePose(A, t, &pa);
     vrBody_ShapePose(B, t, &pb);
     o->checks++;
-    in = vrContact_Within(&A->shape, &pa, &B->shape, &pb, &p->cache, o->p.d, &seen);
+    in = vrContact_Within(&A->shape, &pa, &B->shape, &pb, &p->cache, level, &seen);
     near->valid = 0;
-    /* bounds from a measurement within a few tolerances of d cannot decide
-     * anything beside it: not worth making */
-    if (seen.dist > 0 && fabs(seen.dist - o->p.d) > 4 * BOUND_TOL)
+    /* bounds from a measurement within a few tolerances of the level cannot
+     * decide anything beside it: not worth making */
+    if (seen.dist > 0 && fabs(seen.dist - level) > 4 * BOUND_TOL)
         vrDistBound_Make(near, A, &pa, B, &pb, t, seen.pa, seen.pb, 1, lo, hi);
     return in;
 }
 
 /* what the bounds from the bracket's two ends say about the distance at t */
-static int decided(const vrOwner *o, const vrDistBound near[2], double t)
+static int decided(const vrDistBound near[2], double t, double level)
 {
     int k, say;
     for (k = 0; k < 2; k++)
-        if ((say = vrDistBound_Decide(&near[k], t, o->p.d, BOUND_TOL)) >= 0) return say;
+        if ((say = vrDistBound_Decide(&near[k], t, level, BOUND_TOL)) >= 0) return say;
     return -1;
 }
 
-/* the first time in (lo, hi] with distance <= d: exactly BISECTIONS halvings,
+/* the first time in (lo, hi] with distance <= level: exactly BISECTIONS halvings,
  * the event at the upper end of the final bracket (SPEC 3.2).  at_hi is the
  * query at hi.  A halving whose answer the bounds from a measurement at
  * either end of the bracket prove (distbound.h) is not asked of the
  * geometry: the same answers, so the same bracket, from a few walks. */
-static double bisect(vrOwner *o, vrPair *p, double lo, double hi, const vrContact *at_hi)
+static double bisect(vrOwner *o, vrPair *p, double lo, double hi, const vrContact *at_hi, double level)
 {
     const double lo0 = lo, hi0 = hi;
     vrDistBound near[2];      /* from the measurements at lo and at hi */
@@ -739,8 +740,8 @@ static double bisect(vrOwner *o, vrPair *p, double lo, double hi, const vrContac
          * times of tens of seconds, a dozen of the 48): hi tests true, a lo
          * that was tested false does again, so neither is tested twice. */
         if (mid == hi || (mid == lo && lo_tested)) break;
-        if ((in = decided(o, near, mid)) < 0) {
-            in = within_d(o, p, mid, lo0, hi0, &seen);
+        if ((in = decided(near, mid, level)) < 0) {
+            in = within(o, p, mid, level, lo0, hi0, &seen);
             near[in] = seen;
         }
         if (in) hi = mid;
@@ -935,6 +936,29 @@ static int impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
     return 1;
 }
 
+/* A pair inside the envelope at the last grid point found overlapping at
+ * this one: free flight carried a contact point through the surface
+ * between them (a body on a tip or an edge and not supported sinks
+ * g h^2 / 2 in a step h under the force).  The moment the distance came
+ * to 0 is found by bisection, as an impact's, and the contact answered
+ * there if its points approach faster than v_eps (a push-out at t lifts
+ * the body against the force: that much energy more).  A contact answered
+ * at the step's start still touches there: its touch is found at once and
+ * slow, and the push-out follows (an impulse would only start a run of
+ * ever smaller ones). */
+static int touch(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
+{
+    vrPose pa, pb;
+    vrContact c;
+    vrApproach ap;
+    event_query(o, p, tau, &pa, &pb, &c);
+    if (c.npoints == 0 || c.dist < -VR_PENETRATION_TOL) return 0;
+    approach(o, p, tau, &pa, &pb, &c, &ap);
+    if (!(ap.umin < -VR_V_EPS)) return 0;
+    impulse_event(o, ev, VR_EV_CONTACT, tau, p, &c, &ap);
+    return 1;
+}
+
 /* heap = 0 is the thesis's ablation: every pair looked at fully, every
  * step; an inside or support pair always is (its events need the contact) */
 static int cheap_look_allowed(const vrOwner *o, const vrPair *p)
@@ -1126,22 +1150,26 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     vrPair *p = &o->pair[pi];
     vrPose pa, pb;
     vrContact c;
+    int was_inside;
     remember(o, pi, t);
     p->quiet_until = -INFINITY;
     if (clear_by_spheres(o, pi, t) || clear_by_walk(o, pi, t)) return 0;
     query(o, p, t, 1, &pa, &pb, &c);   /* the region is only made inside the envelope */
     p->t_check = t;
     if (c.dist > o->p.d) {
-        int was_inside = p->inside;
+        was_inside = p->inside;
         settle(o, pi, 0, pair_key(o, p, t, c.dist, c.n));
         return was_inside || t == t_prev ? lost_support(o, ev, t, p, &c) : 0;
     }
-    if (!p->inside && t > t_prev && impact(o, ev, p, bisect(o, p, t_prev, t, &c))) {
+    if (!p->inside && t > t_prev && impact(o, ev, p, bisect(o, p, t_prev, t, &c, o->p.d))) {
         settle(o, pi, p->inside, t);  /* due again at once: it is rolled back or re-evaluated */
         return 1;
     }
+    was_inside = p->inside;
     settle(o, pi, 1, t);
     for_events(o, p, t, &pa, &pb, &c);   /* the query above had the region: event_query's */
+    if (was_inside && t > t_prev && c.dist < -VR_PENETRATION_TOL && touch(o, ev, p, bisect(o, p, t_prev, t, &c, 0)))
+        return 1;                         /* due again at once, as after an impact */
     if (inside_events(o, ev, t, p, &pa, &pb, &c)) return 1;
     if (o->p.use_heap && (quiet_slide(o, p, t, &c) || quiet_support(o, p, t, &pa, &pb, &c))) p->quiet_until = o->bp.T;
     return 0;
@@ -1239,6 +1267,15 @@ static void collect_due(vrOwner *o, double t)
     }
 }
 
+/* may inside pair pi overlap at t (so that it may touch before t)?  The
+ * walk decides: the canonical distance may lie up to 1e-6 m below it
+ * (contact.h), so a walk within VR_QUICK_CLEAR of touching says maybe. */
+static int overlaps(vrOwner *o, int pi, double t)
+{
+    vrDistBound unused;
+    return within(o, &o->pair[pi], t, VR_QUICK_CLEAR, t, t, &unused);
+}
+
 /* an event found so far comes before t */
 static int impact_before(const vrOwner *o, double t)
 {
@@ -1261,11 +1298,14 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
         double t = vrGrid_Point(g, k), key;
         collect_due(o, t);
         for (i = 0; i < o->due.n; i++) evaluate_into_found(o, o->due.v[i], t, vrGrid_Point(g, k - 1), 1);
-        /* A pair inside the envelope has its events at grid points only:
-         * after an impact bisected to before t they could only be rolled
-         * back (in a heap of bodies, most of the look-ahead's work) */
-        if (!impact_before(o, t))
-            for (i = 0; i < o->due_inside.n; i++) evaluate_into_found(o, o->due_inside.v[i], t, vrGrid_Point(g, k - 1), 1);
+        /* A pair inside the envelope has its events at grid points only,
+         * unless it overlaps there (touch): after an event bisected to
+         * before t the others could only be rolled back (in a heap of
+         * bodies, most of the look-ahead's work), so only overlapping ones
+         * are looked at, as a worker without that event would */
+        for (i = 0; i < o->due_inside.n; i++)
+            if (!impact_before(o, t) || overlaps(o, o->due_inside.v[i], t))
+                evaluate_into_found(o, o->due_inside.v[i], t, vrGrid_Point(g, k - 1), 1);
         if (o->nfound) return take_first(o, t, ev);
         if (!o->p.use_heap || o->active.n > 0) { k++; continue; }
         if (vrHeap_Top(&o->heap, &key) < 0) break;
@@ -1393,12 +1433,15 @@ static int respond_impulse(vrOwner *o, const vrEvent *ev, vrUpdate *up)
     return 0;
 }
 
-/* interpenetrating bodies are pushed apart along the normal to half the
- * collision distance, shared by inverse mass */
+/* Interpenetrating bodies are pushed apart along the normal out of the
+ * overlap, to VR_PUSHOUT_GAP apart, shared by inverse mass.  No further:
+ * lifting a body against the force adds its weight times the lift to the
+ * energy (a 10 kg body pushed to half a 1 cm envelope gained 0.49 J), and
+ * the contact that follows at the same instant takes what approach is left. */
 static int respond_pushout(vrOwner *o, const vrEvent *ev, vrUpdate *up)
 {
     vrBody *b[2] = {o->body[ev->a], o->body[ev->b]};
-    double w0 = b[0]->inv_mass, w1 = b[1]->inv_mass, total = ev->depth + 0.5 * o->p.d;
+    double w0 = b[0]->inv_mass, w1 = b[1]->inv_mass, total = ev->depth + VR_PUSHOUT_GAP;
     double share[2] = {w0 / (w0 + w1), w1 / (w0 + w1)}, sign[2] = {-1, 1};
     int s;
     for (s = 0; s < 2; s++) {
