@@ -257,6 +257,66 @@ static int test_joint_supports_match_serial(void)
     return 0;
 }
 
+/* pinched superquadrics spinning on their tips (never supported: their
+ * tips touch the floor between grid points, answered at the touching
+ * moment, gp.c touch) among bouncing balls (impacts bisected to before
+ * the grid points where the tops overlap); the heap on and off, and
+ * workers, must agree on every bit */
+static void tops(vrWorld *w)
+{
+    vrSettings s = *vrWorld_Settings(w);
+    vrObjectDef d = vrObjectDef_Default(VR_CUBE);
+    int i;
+    s.collision_dist = 0.01;
+    s.time_step = 0.02;
+    s.force_mag = 9.8;
+    s.max_angular = 1000;
+    vrWorld_SetSettings(w, &s, NULL, 0);
+    d.size[0] = 2; d.size[1] = 2; d.size[2] = 0.05;
+    d.translate[2] = -0.05;
+    d.mass = -1; d.mass_set = 1;
+    d.elasticity = 0.8;
+    put(w, "floor", VR_CUBE, &d);
+    for (i = 0; i < 9; i++) {
+        char name[16];
+        d = vrObjectDef_Default(i % 3 ? VR_SPHERE : VR_SUPERQUADRIC);
+        d.a1 = 0.054; d.a2 = 0.112; d.a3 = 0.117;
+        d.exp1 = 1.73; d.exp2 = 1.24;
+        d.radius = 0.05;
+        d.translate[0] = -0.9 + 0.6 * (i % 4); d.translate[1] = -0.6 + 0.5 * (i / 4); d.translate[2] = 0.3 + 0.1 * i;
+        d.linear_vel[0] = 0.3 * (i % 3) - 0.3; d.linear_vel[1] = 0.2 * (i % 2) - 0.1;
+        d.rotate_set = 1;
+        d.rotate_axis[0] = -0.6; d.rotate_axis[1] = 0.2 + 0.1 * i; d.rotate_axis[2] = 0.6;
+        d.rotate_angle = 2.4;
+        d.angular_vel[0] = 1.8; d.angular_vel[1] = -3.6; d.angular_vel[2] = 7.0;
+        d.mass = i % 3 ? 1 : 10; d.mass_set = 1;
+        d.elasticity = i % 3 ? 0.9 : 0;
+        snprintf(name, sizeof name, "%s%d", i % 3 ? "ball" : "top", i);
+        put(w, name, d.type, &d);
+    }
+}
+
+static void tops_without_heap(vrWorld *w)
+{
+    vrSettings s;
+    tops(w);
+    s = *vrWorld_Settings(w);
+    s.heap = 0;
+    vrWorld_SetSettings(w, &s, NULL, 0);
+}
+
+static int test_touching_tops_match_serial(void)
+{
+    vrRun serial = run(tops, 0, "memq://", VR_DIST_ROUND_ROBIN, 150);
+    vrRun no_heap = run(tops_without_heap, 0, "memq://", VR_DIST_ROUND_ROBIN, 150);
+    vrRun two = run(tops, 2, "memq://", VR_DIST_ROUND_ROBIN, 150);
+    vrRun three = run(tops, 3, "memq://", VR_DIST_IMPROVED, 150);
+    ENSURE(!serial.failed && !no_heap.failed && !two.failed && !three.failed);
+    printf("    %lld responses\n", serial.stats.collisions);
+    ENSURE(no_heap.hash == serial.hash && two.hash == serial.hash && three.hash == serial.hash);
+    return 0;
+}
+
 /* workers on "other hosts" (ttl=1): started by hand as `vroc-gp URL`; the
  * shell claims them instead of forking its own */
 static const char *build_dir = "build/rel";
@@ -506,6 +566,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_no_worker_left_is_a_clear_error);
     RUN_TEST(test_foreign_and_malformed_messages_are_ignored);
     RUN_TEST(test_joint_supports_match_serial);
+    RUN_TEST(test_touching_tops_match_serial);
     RUN_TEST(test_an_overlap_made_by_an_edit_stops_every_start);
     RUN_TEST(test_counts_and_bits_survive_new_workers);
     RUN_TEST(test_the_instant_cap_holds_across_frames);
