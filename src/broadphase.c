@@ -208,7 +208,7 @@ int vrBroad_Meeting(const vrBroadphase *bp, int id, void (*meet)(void *ctx, int 
 int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0, double T,
                      void (*meet)(void *ctx, int x, int y), void (*boxless)(void *ctx, int id), void *ctx)
 {
-    int i, j;
+    int i, j, passed;   /* passed: the moving bodies the sweep has passed, which lead near */
     bp->frame++;
     bp->t0 = t0;
     bp->T = T;
@@ -217,14 +217,26 @@ int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0
         if (!vrBroad_Box(bp, body, bp->sweep[i])->valid) boxless(ctx, bp->sweep[i]);
     sort_sweep(bp);
     make_near(bp);
-    for (i = 0; i < bp->nsweep; i++) {
-        const vrBox *a = &bp->box[bp->sweep[i]];
+    for (i = 0, passed = 0; i < bp->nsweep; i++) {
+        int x = bp->sweep[i];
+        const vrBox *a = &bp->box[x];
         if (!a->valid) continue;
-        for (j = i + 1; j < bp->nsweep && bp->box[bp->sweep[j]].lo.x <= a->hi.x; j++) {
-            int x = bp->sweep[i], y = bp->sweep[j];
-            /* two static bodies make no pair: furniture overlapping at its
-             * joints is not met again every frame */
-            if (a->frame == VR_BOX_FOR_GOOD && bp->box[y].frame == VR_BOX_FOR_GOOD) continue;
+        if (a->frame != VR_BOX_FOR_GOOD || bp->near_frame != bp->frame) {
+            for (j = i + 1; j < bp->nsweep && bp->box[bp->sweep[j]].lo.x <= a->hi.x; j++) {
+                int y = bp->sweep[j];
+                /* two static bodies make no pair: furniture overlapping at
+                 * its joints is not met again every frame */
+                if (a->frame == VR_BOX_FOR_GOOD && bp->box[y].frame == VR_BOX_FOR_GOOD) continue;
+                if (!vrBox_Disjoint(a, &bp->box[y])) meet(ctx, x < y ? x : y, x < y ? y : x);
+            }
+            if (a->frame != VR_BOX_FOR_GOOD) passed++;
+            continue;
+        }
+        /* a static body: only the moving ones after it in the sweep (near
+         * holds them in the same order), the same meetings in the same
+         * order without a look at the many other statics a room has */
+        for (j = passed; j < bp->nnear && near_key(bp, j) <= a->hi.x; j++) {
+            int y = bp->near[j];
             if (!vrBox_Disjoint(a, &bp->box[y])) meet(ctx, x < y ? x : y, x < y ? y : x);
         }
     }
