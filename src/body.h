@@ -42,7 +42,8 @@ typedef enum {
 
 #define VR_ROT_CHECKPOINTS 32
 
-/* integrator state at a whole number of steps after t0 (principal frame) */
+/* integrator state at a whole number of steps after t0 (principal frame);
+ * motion.c keeps steps after the first "open" (see open_step) */
 typedef struct vrRotState { long step; quat Q; vec3 Pi; } vrRotState;
 
 typedef struct vrRotCache {
