@@ -10,9 +10,12 @@ gravity or none; then steps it in blocks and, after every block, checks
     tunnelled into a static one or into another object is reported;
   - energy never grows: every response has e <= 1 and the force is
     conservative, so `stats` energy may only fall (allowing the rotation
-    integrator's drift, SPEC 3.2, and 1e-3 for push-outs, below);
+    integrator's drift, SPEC 3.2, and 5e-3 for push-outs, below);
   - with e = 1 everywhere and no force, energy is kept (speed clamps are
     lifted: max_linear and max_angular above anything reachable);
+  - nothing tunnels: dumped every frame, no body leaves the room, and no
+    centre crosses a thin plate's plane where the plate stands wider around
+    it than the body reaches plus how far it moved in the frame;
   - every dumped number is finite;
   - heap = 0, and 2 workers (memq://, in this process's memory), print
     the same dumps as heap = 1 serially, to the bit (SPEC 3.2, 5).
@@ -44,7 +47,7 @@ def scene(seed, mode="heap = 1"):
         P("cube %s\n size = (%g,%g,%g)\n translate = (%g,%g,%g)\n mass = -1" % ((name,) + size + at))
         P(" elasticity = %g" % (1 if conservative else r.uniform(0.3, 1)))
     # static plates (thin) and blocks, some rotated, kept apart from one another
-    statics = []
+    statics, plates, reach = [], [], {}
     for i in range(r.randint(0, 3)):
         for _ in range(100):
             c = (r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(0.3, 2.2))
@@ -56,8 +59,11 @@ def scene(seed, mode="heap = 1"):
         thin = r.random() < 0.5
         size = (r.uniform(0.2, 0.4), r.uniform(0.2, 0.4), 0.005 if thin else r.uniform(0.05, 0.2))
         P("cube s%d\n size = (%g,%g,%g)\n translate = (%g,%g,%g)\n mass = -1" % ((i,) + size + c))
+        axis, angle = (0, 0, 1), 0
         if r.random() < 0.6:
-            P(" rotate = (%g,%g,%g) %g" % (r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(0.2, 1), r.uniform(0.1, 1.2)))
+            axis, angle = (r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(0.2, 1)), r.uniform(0.1, 1.2)
+            P(" rotate = (%g,%g,%g) %g" % (axis + (angle,)))
+        plates.append((c, rotation(axis, angle), size))
         P(" elasticity = %g" % (1 if conservative else r.uniform(0, 1)))
     # dynamic objects on a loose grid, clear of the statics
     placed = []
@@ -72,12 +78,15 @@ def scene(seed, mode="heap = 1"):
         kind = r.choice(["cube", "superquadric", "sphere"])
         P("%s d%d" % (kind, i))
         if kind == "cube":
-            P(" size = (%g,%g,%g)" % tuple(r.uniform(0.02, 0.12) for _ in range(3)))
+            half = tuple(r.uniform(0.02, 0.12) for _ in range(3))
+            P(" size = (%g,%g,%g)" % half)
         elif kind == "superquadric":
-            P(" a1 = %g\n a2 = %g\n a3 = %g\n exp1 = %g\n exp2 = %g" % (
-                r.uniform(.03, .12), r.uniform(.03, .12), r.uniform(.03, .12), r.uniform(.3, 1.8), r.uniform(.3, 1.8)))
+            half = (r.uniform(.03, .12), r.uniform(.03, .12), r.uniform(.03, .12))
+            P(" a1 = %g\n a2 = %g\n a3 = %g\n exp1 = %g\n exp2 = %g" % (half + (r.uniform(.3, 1.8), r.uniform(.3, 1.8))))
         else:
-            P(" radius = %g" % r.uniform(0.02, 0.12))
+            half = (r.uniform(0.02, 0.12),) * 3
+            P(" radius = %g" % half[0])
+        reach["d%d" % i] = math.sqrt(sum(h * h for h in half))   # beyond any point of it
         P(" translate = (%g,%g,%g)" % c)
         P(" mass = %g" % r.choice([0.1, 0.5, 1, 3, 10]))
         P(" elasticity = %g" % (1 if conservative else r.choice([0, 0.3, 0.8, 1, r.uniform(0, 1)])))
@@ -90,8 +99,42 @@ def scene(seed, mode="heap = 1"):
     P("start\nstats")
     blocks = r.randint(3, 8)
     for _ in range(blocks):
-        P("step %d\nstats\ndump\nstart" % r.randint(5, 60))
-    return "\n".join(out) + "\n", conservative
+        P("step 1\ndump\n" * r.randint(5, 60) + "stats\nstart")
+    return "\n".join(out) + "\n", conservative, plates, reach
+
+
+def rotation(axis, angle):
+    """the rotation matrix of `rotate = axis angle` (Rodrigues)"""
+    n = math.sqrt(sum(a * a for a in axis))
+    x, y, z = (a / n for a in axis)
+    c, s, k = math.cos(angle), math.sin(angle), 1 - math.cos(angle)
+    return ((c + x * x * k, x * y * k - z * s, x * z * k + y * s),
+            (y * x * k + z * s, c + y * y * k, y * z * k - x * s),
+            (z * x * k - y * s, z * y * k + x * s, c + z * z * k))
+
+
+def tunnelled(lines, plates, reach):
+    """the first passage through a wall or a thin plate in per-frame dumps"""
+    last = {}
+    for line in lines:
+        f = line.split(",")
+        if f[0] not in reach:
+            continue
+        name, x = f[0], tuple(float(v) for v in f[2:5])
+        if abs(x[0]) > 1.5 or abs(x[1]) > 1.5 or not 0 < x[2] < 3:
+            return "%s left the room at t %s: %s" % (name, f[1], x)
+        if name in last:
+            moved = math.dist(last[name], x)
+            for c, R, half in plates:
+                if half[2] > 0.01:
+                    continue
+                a, b = (tuple(sum(R[i][j] * (p[i] - c[i]) for i in range(3)) for j in range(3)) for p in (last[name], x))
+                room = reach[name] + moved
+                inside = all(abs(q[k]) < half[k] - room for q in (a, b) for k in (0, 1))
+                if inside and a[2] * b[2] < 0:
+                    return "%s went through a plate at t %s" % (name, f[1])
+        last[name] = x
+    return None
 
 
 def run(vroc, text):
@@ -109,7 +152,7 @@ def dumps(p):
 
 
 def check(vroc, seed):
-    text, conservative = scene(seed)
+    text, conservative, plates, reach = scene(seed)
     p, path = run(vroc, text)
     if p is None:
         return "hang", path
@@ -117,6 +160,9 @@ def check(vroc, seed):
         return "crash (exit %d) %s" % (p.returncode, p.stderr.strip()[:200]), path
     if p.stderr.strip():
         return p.stderr.strip().splitlines()[0], path
+    problem = tunnelled(dumps(p), plates, reach)
+    if problem:
+        return problem, path
     energies = []
     for line in p.stdout.splitlines():
         if line.startswith("frames="):
@@ -129,8 +175,9 @@ def check(vroc, seed):
         scale = max(1.0, abs(e0))
         # the integrator's drift (1e-6/s), and push-outs: an unsupported tip
         # drawn through a surface between grid points is lifted back by its
-        # depth (m g h^2 / 2 a step; 7e-4 of the energy seen at worst)
-        tol = 1e-6 * scale * (t1 - t0 + 1) + (0 if conservative else 1e-3 * scale)
+        # depth (m g h^2 / 2 a step; 4.5e-3 of the energy seen at worst, a
+        # push-out to half the envelope gave 3e-2)
+        tol = 1e-6 * scale * (t1 - t0 + 1) + (0 if conservative else 5e-3 * scale)
         if e1 > e0 + tol:
             return "energy grew %.9g -> %.9g (t %g -> %g)" % (e0, e1, t0, t1), path
         if conservative and abs(e1 - e0) > tol:
