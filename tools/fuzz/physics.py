@@ -13,6 +13,8 @@ gravity or none; then steps it in blocks and, after every block, checks
     integrator's drift, SPEC 3.2, and 5e-3 for push-outs, below);
   - with e = 1 everywhere and no force, energy is kept (speed clamps are
     lifted: max_linear and max_angular above anything reachable);
+  - with no force and nothing static (an eighth of the seeds: no room),
+    linear momentum is kept to 1e-9, whatever the elasticities;
   - nothing tunnels: dumped every frame, no body leaves the room, and no
     centre crosses a thin plate's plane where the plate stands wider around
     it than the body reaches plus how far it moved in the frame;
@@ -35,20 +37,21 @@ def scene(seed, mode="heap = 1"):
     out = []
     P = out.append
     conservative = r.random() < 0.25          # e = 1, no force: energy kept
+    free = random.Random(seed * 3 + 2).random() < 0.125   # no force, no room: momentum kept
     P("time_step = %g\ncollision_dist = %g\nmax_frames = 0" % (r.choice([0.01, 0.02, 0.05]), r.choice([0.005, 0.01, 0.02])))
     P("max_linear = 1000\nmax_angular = 100000")        # no clamp bites: they remove energy
-    if not conservative:
+    if not conservative and not free:
         P("gravity")
     P(mode)
     # a 3 m room of 0.1 m walls
-    for name, size, at in (("floor", (1.6, 1.6, 0.1), (0, 0, -0.1)), ("ceil", (1.6, 1.6, 0.1), (0, 0, 3.1)),
+    for name, size, at in () if free else (("floor", (1.6, 1.6, 0.1), (0, 0, -0.1)), ("ceil", (1.6, 1.6, 0.1), (0, 0, 3.1)),
                            ("wx0", (0.1, 1.6, 1.6), (-1.6, 0, 1.5)), ("wx1", (0.1, 1.6, 1.6), (1.6, 0, 1.5)),
                            ("wy0", (1.6, 0.1, 1.6), (0, -1.6, 1.5)), ("wy1", (1.6, 0.1, 1.6), (0, 1.6, 1.5))):
         P("cube %s\n size = (%g,%g,%g)\n translate = (%g,%g,%g)\n mass = -1" % ((name,) + size + at))
         P(" elasticity = %g" % (1 if conservative else r.uniform(0.3, 1)))
     # static plates (thin) and blocks, some rotated, kept apart from one another
-    statics, plates, reach = [], [], {}
-    for i in range(r.randint(0, 3)):
+    statics, plates, reach, mass = [], [], {}, {}
+    for i in range(0 if free else r.randint(0, 3)):
         for _ in range(100):
             c = (r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(0.3, 2.2))
             if all(math.dist(c, s) > 0.9 for s in statics):
@@ -88,7 +91,8 @@ def scene(seed, mode="heap = 1"):
             P(" radius = %g" % half[0])
         reach["d%d" % i] = math.sqrt(sum(h * h for h in half))   # beyond any point of it
         P(" translate = (%g,%g,%g)" % c)
-        P(" mass = %g" % r.choice([0.1, 0.5, 1, 3, 10]))
+        mass["d%d" % i] = r.choice([0.1, 0.5, 1, 3, 10])
+        P(" mass = %g" % mass["d%d" % i])
         P(" elasticity = %g" % (1 if conservative else r.choice([0, 0.3, 0.8, 1, r.uniform(0, 1)])))
         if r.random() < 0.5:
             P(" rotate = (%g,%g,%g) %g" % (r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1) + 0.01, r.uniform(0, 3)))
@@ -100,7 +104,7 @@ def scene(seed, mode="heap = 1"):
     blocks = r.randint(3, 8)
     for _ in range(blocks):
         P("step 1\ndump\n" * r.randint(5, 60) + "stats\nstart")
-    return "\n".join(out) + "\n", conservative, plates, reach
+    return "\n".join(out) + "\n", dict(conservative=conservative, free=free, plates=plates, reach=reach, mass=mass)
 
 
 def rotation(axis, angle):
@@ -113,7 +117,7 @@ def rotation(axis, angle):
             (z * x * k - y * s, z * y * k + x * s, c + z * z * k))
 
 
-def tunnelled(lines, plates, reach):
+def tunnelled(lines, plates, reach, room):
     """the first passage through a wall or a thin plate in per-frame dumps"""
     last = {}
     for line in lines:
@@ -121,7 +125,7 @@ def tunnelled(lines, plates, reach):
         if f[0] not in reach:
             continue
         name, x = f[0], tuple(float(v) for v in f[2:5])
-        if abs(x[0]) > 1.5 or abs(x[1]) > 1.5 or not 0 < x[2] < 3:
+        if room and (abs(x[0]) > 1.5 or abs(x[1]) > 1.5 or not 0 < x[2] < 3):
             return "%s left the room at t %s: %s" % (name, f[1], x)
         if name in last:
             moved = math.dist(last[name], x)
@@ -151,8 +155,33 @@ def dumps(p):
     return [line for line in p.stdout.splitlines() if not line.startswith("frames=")]
 
 
+def momentum_drift(lines, mass):
+    """the largest change of the total linear momentum between two dumps,
+    and the sum of the bodies' momenta it is measured against"""
+    first, worst, size = None, 0.0, 0.0
+    frames, cur = [], {}
+    for line in lines:
+        f = line.split(",")
+        if f[0].startswith("#"):
+            if cur:
+                frames.append(cur)
+            cur = {}
+        elif f[0] in mass:
+            cur[f[0]] = tuple(mass[f[0]] * float(v) for v in f[9:12])
+    if cur:
+        frames.append(cur)
+    for fr in frames:
+        total = tuple(sum(v[k] for v in fr.values()) for k in range(3))
+        size = max(size, sum(math.sqrt(sum(c * c for c in v)) for v in fr.values()))
+        if first is None:
+            first = total
+        worst = max(worst, math.dist(total, first))
+    return worst, size
+
+
 def check(vroc, seed):
-    text, conservative, plates, reach = scene(seed)
+    text, info = scene(seed)
+    conservative, plates, reach = info["conservative"], info["plates"], info["reach"]
     p, path = run(vroc, text)
     if p is None:
         return "hang", path
@@ -160,9 +189,13 @@ def check(vroc, seed):
         return "crash (exit %d) %s" % (p.returncode, p.stderr.strip()[:200]), path
     if p.stderr.strip():
         return p.stderr.strip().splitlines()[0], path
-    problem = tunnelled(dumps(p), plates, reach)
+    problem = tunnelled(dumps(p), plates, reach, not info["free"])
     if problem:
         return problem, path
+    if info["free"]:
+        drift, size = momentum_drift(dumps(p), info["mass"])
+        if drift > 1e-9 * size + 1e-12:
+            return "momentum drifted by %.3g (of %.3g)" % (drift, size), path
     energies = []
     for line in p.stdout.splitlines():
         if line.startswith("frames="):
