@@ -272,6 +272,44 @@ static int test_walk_and_canonical_distance_under_a_long_edge(void)
     return 0;
 }
 
+/* Two tilted boxes of a falling stack, touching (1.4e-8 m apart by brute
+ * force), from the cache a real run left (edges 11 and 3): the canonical
+ * distance must agree with brute force, from that start and every other. */
+static int test_touching_tilted_boxes_distance_is_brute_force(void)
+{
+    Fix a, b;
+    vrPose pa, pb;
+    vrWalkCache cache;
+    vrContact c;
+    double brute;
+    int ta, ia, tb, ib, bad = 0;
+    ENSURE(box(&a, 0.130818, 0.137998, 0.0720204) == 0 && box(&b, 0.0561977, 0.132212, 0.058558) == 0);
+    pa = vrPose_make(vec3_make(0.44620438885569025, -0.85973506138873579, 0.23468476145808079),
+                     quat_make(0.95150791567605841, 0.1089676473235246, -0.047559830732079526, 0.28371958117710999));
+    pb = vrPose_make(vec3_make(0.45152915773230401, -0.62996058743159855, 0.40655357958174038),
+                     quat_make(0.9936011724761824, 0.0033259913271367902, -0.10810894463319431, -0.032528509433178199));
+    brute = vrClosest_BruteForce(a.s.poly, &pa, b.s.poly, &pb);
+    for (ta = 0; ta < 3; ta++)
+        for (ia = 0; ia < 12; ia++)
+            for (tb = 0; tb < 3; tb++)
+                for (ib = 0; ib < 12; ib++) {
+                    if ((ta == VR_VERTEX && ia >= 8) || (ta == VR_FACE && ia >= 6)) continue;
+                    if ((tb == VR_VERTEX && ib >= 8) || (tb == VR_FACE && ib >= 6)) continue;
+                    memset(&cache, 0, sizeof cache);
+                    cache.a.type = ta, cache.a.index = ia, cache.b.type = tb, cache.b.index = ib;
+                    cache.valid = 1;
+                    ENSURE(vrContact_Distance(&a.s, &pa, &b.s, &pb, &cache, &c) == 0);
+                    if (fabs(c.dist - brute) > 1e-9) {
+                        if (!bad++) printf("    from (%d,%d)/(%d,%d): %.17g, brute force %.17g\n", ta, ia, tb, ib, c.dist, brute);
+                    }
+                }
+    printf("    brute force %.3g m; %d starts disagree\n", brute, bad);
+    ENSURE(bad == 0);
+    unfix(&a);
+    unfix(&b);
+    return 0;
+}
+
 /* Parallel faces, stacked cubes, parallel and crossed edges, a pole over a
  * face: Region gives the same bits from every start pair of features. */
 static int test_region_is_bit_identical_from_every_start_cache(void)
@@ -679,6 +717,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_distance_is_brute_force_distance_and_independent_of_cache);
     RUN_TEST(test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance);
     RUN_TEST(test_walk_and_canonical_distance_under_a_long_edge);
+    RUN_TEST(test_touching_tilted_boxes_distance_is_brute_force);
     RUN_TEST(test_region_is_bit_identical_from_every_start_cache);
     RUN_TEST(test_region_box_flat_on_table_is_its_four_bottom_corners);
     RUN_TEST(test_region_overhanging_box_is_clipped_to_the_table);
