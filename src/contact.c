@@ -382,6 +382,12 @@ static int canonical(const Body *a, const Body *b, vec3 dir, vrFeature fa, vrFea
 
 /* ---- the walk's direction and starting vertices ---------------------------- */
 
+static vec3 unit_or_up(vec3 v)
+{
+    v = vec3_normalize(v);
+    return vec3_len2(v) > 0 ? v : vec3_make(0, 0, 1);
+}
+
 /* How far apart a (from vertex va) and b (from vb), or a and the point c
  * when b is NULL, are along world direction u: the gap between their
  * support planes, by climbing the vertex graphs. */
@@ -451,10 +457,13 @@ static vec3 walk_direction(const Gap *g, vrFeature fa, vrFeature fb, vec3 ca, ve
     if (g->b && fb.type == VR_FACE) return vec3_neg(vrPose_rotate(g->b->pose, g->b->p->face_normal[fb.index]));
     best = vec3_normalize(vec3_sub(cb, ca));
     if (dw >= GAP_FUZZ * (1 + g->a->p->r_out + (g->b ? g->b->p->r_out : 0))) return best;
-    bestgap = gap_along(g, best);
+    /* closest points that coincide (crossing edges 3e-17 m apart) give no
+     * direction at all: the features' own then win whatever their gap */
+    bestgap = vec3_len2(best) > 0 ? gap_along(g, best) : -HUGE_VAL;
     if (g->b && fa.type == VR_EDGE && fb.type == VR_EDGE) try_edges(g, fa.index, fb.index, &best, &bestgap);
     if (fa.type == VR_VERTEX || fa.type == VR_EDGE) try_faces(g, g->a, fa, 1, &best, &bestgap);
     if (g->b && (fb.type == VR_VERTEX || fb.type == VR_EDGE)) try_faces(g, g->b, fb, -1, &best, &bestgap);
+    if (vec3_len2(best) == 0) best = unit_or_up(vec3_sub(g->b ? g->b->pose->p : g->c, g->a->pose->p));
     return best;
 }
 
@@ -692,12 +701,6 @@ static void set_result(vrContact *out, double dist, vec3 n, vec3 pa, vec3 pb)
     out->n = n;
     out->pa = pa;
     out->pb = pb;
-}
-
-static vec3 unit_or_up(vec3 v)
-{
-    v = vec3_normalize(v);
-    return vec3_len2(v) > 0 ? v : vec3_make(0, 0, 1);
 }
 
 /* Overlap: libccd's depth, direction and position (step 7).  When libccd

@@ -272,23 +272,17 @@ static int test_walk_and_canonical_distance_under_a_long_edge(void)
     return 0;
 }
 
-/* Two tilted boxes of a falling stack, touching (1.4e-8 m apart by brute
- * force), from the cache a real run left (edges 11 and 3): the canonical
- * distance must agree with brute force, from that start and every other. */
-static int test_touching_tilted_boxes_distance_is_brute_force(void)
+/* The canonical distance of boxes a and b (half sizes ha, hb, poses pa, pb)
+ * from every start cache, against brute force (touching counts as 0);
+ * returns how many starts disagree by more than 1e-9 m */
+static int disagreements(vec3 ha, vrPose pa, vec3 hb, vrPose pb, double *brute)
 {
     Fix a, b;
-    vrPose pa, pb;
     vrWalkCache cache;
     vrContact c;
-    double brute;
     int ta, ia, tb, ib, bad = 0;
-    ENSURE(box(&a, 0.130818, 0.137998, 0.0720204) == 0 && box(&b, 0.0561977, 0.132212, 0.058558) == 0);
-    pa = vrPose_make(vec3_make(0.44620438885569025, -0.85973506138873579, 0.23468476145808079),
-                     quat_make(0.95150791567605841, 0.1089676473235246, -0.047559830732079526, 0.28371958117710999));
-    pb = vrPose_make(vec3_make(0.45152915773230401, -0.62996058743159855, 0.40655357958174038),
-                     quat_make(0.9936011724761824, 0.0033259913271367902, -0.10810894463319431, -0.032528509433178199));
-    brute = vrClosest_BruteForce(a.s.poly, &pa, b.s.poly, &pb);
+    if (box(&a, ha.x, ha.y, ha.z) != 0 || box(&b, hb.x, hb.y, hb.z) != 0) return -1;
+    *brute = vrClosest_BruteForce(a.s.poly, &pa, b.s.poly, &pb);
     for (ta = 0; ta < 3; ta++)
         for (ia = 0; ia < 12; ia++)
             for (tb = 0; tb < 3; tb++)
@@ -298,15 +292,47 @@ static int test_touching_tilted_boxes_distance_is_brute_force(void)
                     memset(&cache, 0, sizeof cache);
                     cache.a.type = ta, cache.a.index = ia, cache.b.type = tb, cache.b.index = ib;
                     cache.valid = 1;
-                    ENSURE(vrContact_Distance(&a.s, &pa, &b.s, &pb, &cache, &c) == 0);
-                    if (fabs(c.dist - brute) > 1e-9) {
-                        if (!bad++) printf("    from (%d,%d)/(%d,%d): %.17g, brute force %.17g\n", ta, ia, tb, ib, c.dist, brute);
+                    if (vrContact_Distance(&a.s, &pa, &b.s, &pb, &cache, &c) != 0 || fabs(fmax(c.dist, 0) - *brute) > 1e-9) {
+                        if (!bad++) printf("    from (%d,%d)/(%d,%d): %.17g, brute force %.17g\n", ta, ia, tb, ib, c.dist, *brute);
                     }
                 }
-    printf("    brute force %.3g m; %d starts disagree\n", brute, bad);
-    ENSURE(bad == 0);
     unfix(&a);
     unfix(&b);
+    return bad;
+}
+
+/* Two tilted boxes of a falling stack 1.4e-8 m apart (crossing edges):
+ * the closest points' direction tilted the lower box's edge past
+ * SUPPORT_TOL and the distance came out 0.21 m.  Poses from the run. */
+static int test_touching_tilted_boxes_distance_is_brute_force(void)
+{
+    double brute;
+    int bad = disagreements(vec3_make(0.130818, 0.137998, 0.0720204),
+        vrPose_make(vec3_make(0.44620438885569025, -0.85973506138873579, 0.23468476145808079),
+                    quat_make(0.95150791567605841, 0.1089676473235246, -0.047559830732079526, 0.28371958117710999)),
+        vec3_make(0.0561977, 0.132212, 0.058558),
+        vrPose_make(vec3_make(0.45152915773230401, -0.62996058743159855, 0.40655357958174038),
+                    quat_make(0.9936011724761824, 0.0033259913271367902, -0.10810894463319431, -0.032528509433178199)),
+        &brute);
+    printf("    brute force %.3g m; %d starts disagree\n", brute, bad);
+    ENSURE(bad == 0);
+    return 0;
+}
+
+/* Crossing edges 3e-17 m apart: the closest points coincide and give no
+ * direction (it was the zero vector, and the distance 0.047 m) */
+static int test_edges_crossing_at_rounding_distance_touch(void)
+{
+    double brute;
+    int bad = disagreements(vec3_make(0.0925069, 0.0971785, 0.0796411),
+        vrPose_make(vec3_make(-0.70622031807973962, -0.94155802747561501, 0.19199516612819587),
+                    quat_make(0.99999938306135616, -0.00028253343808466594, 9.0667770914044194e-05, -0.0010704350137673568)),
+        vec3_make(0.0833773, 0.131503, 0.0758688),
+        vrPose_make(vec3_make(-0.76598873990570848, -0.94074228253144354, 0.34918457839628114),
+                    quat_make(0.99992141704941218, -0.0046865320709901948, 0.0051197799380360244, 0.010439540048739038)),
+        &brute);
+    printf("    brute force %.3g m; %d starts disagree\n", brute, bad);
+    ENSURE(bad == 0);
     return 0;
 }
 
@@ -718,6 +744,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance);
     RUN_TEST(test_walk_and_canonical_distance_under_a_long_edge);
     RUN_TEST(test_touching_tilted_boxes_distance_is_brute_force);
+    RUN_TEST(test_edges_crossing_at_rounding_distance_touch);
     RUN_TEST(test_region_is_bit_identical_from_every_start_cache);
     RUN_TEST(test_region_box_flat_on_table_is_its_four_bottom_corners);
     RUN_TEST(test_region_overhanging_box_is_clipped_to_the_table);
