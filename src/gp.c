@@ -936,23 +936,16 @@ static int impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
     return 1;
 }
 
-/* the pair apart at t_prev (so that a touch in (t_prev, t] is a moment
- * of its own): not after a contact left touching there, or an instant
- * whose cap of responses (SPEC 3.1) left contacts approaching, which a
- * touch two ulps later would answer after all */
-static int apart_at(vrOwner *o, vrPair *p, double t_prev)
-{
-    vrDistBound unused;
-    return !within(o, p, t_prev, 0, t_prev, t_prev, &unused);
-}
-
 /* A pair inside the envelope at the last grid point found overlapping at
  * this one: free flight carried a contact point through the surface
  * between them (a body on a tip or an edge and not supported sinks
  * g h^2 / 2 in a step h under the force).  The moment the distance came
  * to 0 is found by bisection, as an impact's, and the contact answered
  * there if its points approach faster than v_eps (a push-out at t lifts
- * the body against the force: that much energy more). */
+ * the body against the force: that much energy more).  A contact answered
+ * at the step's start still touches there: its touch is found at once and
+ * slow, and the push-out follows (an impulse would only start a run of
+ * ever smaller ones). */
 static int touch(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
 {
     vrPose pa, pb;
@@ -1175,8 +1168,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     was_inside = p->inside;
     settle(o, pi, 1, t);
     for_events(o, p, t, &pa, &pb, &c);   /* the query above had the region: event_query's */
-    if (was_inside && t > t_prev && c.dist < -VR_PENETRATION_TOL && apart_at(o, p, t_prev)
-        && touch(o, ev, p, bisect(o, p, t_prev, t, &c, 0)))
+    if (was_inside && t > t_prev && c.dist < -VR_PENETRATION_TOL && touch(o, ev, p, bisect(o, p, t_prev, t, &c, 0)))
         return 1;                         /* due again at once, as after an impact */
     if (inside_events(o, ev, t, p, &pa, &pb, &c)) return 1;
     if (o->p.use_heap && (quiet_slide(o, p, t, &c) || quiet_support(o, p, t, &pa, &pb, &c))) p->quiet_until = o->bp.T;
