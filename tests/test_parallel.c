@@ -409,7 +409,10 @@ static int test_the_instant_cap_holds_across_frames(void)
         for (k = 0; k < 20; k++) {
             far.elasticity = k % 2 ? 0.5 : 0.6;      /* a new pair set for the workers, no new motion */
             vrWorld_SetObjectDef(w, spare, &far, NULL, 0);
-            ENSURE(vrWorld_Step(w, 1, NULL, 0) == 0);
+            {
+                char e_[512];
+                ENSURE_MSG(vrWorld_Step(w, 1, e_, sizeof e_) == 0, "frame %d, %s: %s", k, parallel ? "workers" : "serial", e_);
+            }
         }
         hash[parallel] = dump_hash(w);
         vrWorld_Destroy(w);

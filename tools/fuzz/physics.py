@@ -38,7 +38,8 @@ def scene(seed, mode="heap = 1"):
     P = out.append
     conservative = r.random() < 0.25          # e = 1, no force: energy kept
     free = random.Random(seed * 3 + 2).random() < 0.125   # no force, no room: momentum kept
-    P("time_step = %g\ncollision_dist = %g\nmax_frames = 0" % (r.choice([0.01, 0.02, 0.05]), r.choice([0.005, 0.01, 0.02])))
+    step, d = r.choice([0.01, 0.02, 0.05]), r.choice([0.005, 0.01, 0.02])
+    P("time_step = %g\ncollision_dist = %g\nmax_frames = 0" % (step, d))
     P("max_linear = 1000\nmax_angular = 100000")        # no clamp bites: they remove energy
     if not conservative and not free:
         P("gravity")
@@ -68,12 +69,28 @@ def scene(seed, mode="heap = 1"):
             P(" rotate = (%g,%g,%g) %g" % (axis + (angle,)))
         plates.append((c, rotation(axis, angle), size))
         P(" elasticity = %g" % (1 if conservative else r.uniform(0, 1)))
+    # an eighth of the rooms have a stack of boxes standing on the floor,
+    # each within the envelope of the one below (in contact at the start)
+    placed, near = [], {}          # near: how far the others keep from a placed centre
+    k = random.Random(seed * 5 + 3)
+    x, y = k.uniform(-1, 1), k.uniform(-1, 1)
+    if not free and k.random() < 0.125 and all(math.dist((x, y), s[:2]) > 0.9 for s in statics):
+        z = 0.0
+        for j in range(k.randint(2, 5)):
+            half = tuple(float("%.6g" % v) for v in (k.uniform(0.05, 0.15), k.uniform(0.05, 0.15), k.uniform(0.02, 0.08)))
+            z += k.uniform(0, d) + half[2]
+            c = (x + k.uniform(-.03, .03), y, z)
+            P("cube k%d\n size = (%.17g,%.17g,%.17g)\n translate = (%.17g,%.17g,%.17g)" % ((j,) + half + c))
+            P(" mass = %g\n elasticity = %g" % (k.choice([0.2, 1, 5]), 1 if conservative else k.uniform(0, 1)))
+            reach["k%d" % j] = math.sqrt(sum(h * h for h in half))
+            placed.append(c)
+            near[c] = 0.5
+            z += half[2]
     # dynamic objects on a loose grid, clear of the statics
-    placed = []
     for i in range(r.randint(2, 9)):
         for _ in range(200):
             c = (r.uniform(-1.3, 1.3), r.uniform(-1.3, 1.3), r.uniform(0.2, 2.8))
-            if all(math.dist(c, s) > 0.75 for s in statics) and all(math.dist(c, p) > 0.3 for p in placed):
+            if all(math.dist(c, s) > 0.75 for s in statics) and all(math.dist(c, p) > near.get(p, 0.3) for p in placed):
                 break
         else:
             continue
