@@ -14,8 +14,9 @@
  *   otherwise the closest points of the two features.
  * The result is a pure function of (shapes, poses): the cache buys speed
  * only.  (Left to chance: a set member within rounding of the 1e-9 m
- * threshold, and whether a contact within rounding of distance 0 counts as
- * touching or overlapping.)
+ * threshold.  Whether a contact within rounding of distance 0 counts as
+ * touching or overlapping is decided by a walk from a fixed start:
+ * TOUCH_TOL.)
  *
  * Spheres collide as true spheres: closed forms against spheres and boxes
  * (thesis 3.2.1 [Glassner90]), the walk to the centre against any other
@@ -723,15 +724,29 @@ static int penetration_contact(const vrShape *a, const vrPose *pa, const vrShape
     return 0;
 }
 
+/* Gaps the walk measures below this are rounding: whether it sees the
+ * shapes a hair apart or a hair inside each other depends on where it
+ * started (a worker's cache differs from the serial owner's), so neither
+ * answer is used as it is (m). */
+#define TOUCH_TOL 1e-12
+
 /* steps 2-5 after the walk (dw, ca, cb, pen: its result, the cache at
- * its end): the canonical features, distance and normal, and the region */
+ * its end): the canonical features, distance and normal, and the region.
+ * Shapes touching within TOUCH_TOL: the walk is made again from a fixed
+ * start, so that what follows is a pure function of the poses. */
 static int poly_finish(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb, double d,
                        vrWalkCache *cache, double dw, vec3 ca, vec3 cb, int pen, vrContact *out)
 {
     Body ba, bb;
     Canon c;
     Gap g;
+    vrWalkCache fresh;
     int rc;
+    if (pen || !(dw > TOUCH_TOL)) {
+        memset(&fresh, 0, sizeof fresh);
+        cache = &fresh;
+        dw = vrClosest_Walk(a->poly, pa, b->poly, pb, cache, &ca, &cb, NULL, &pen);
+    }
     if (pen || !(dw > 0)) return penetration_contact(a, pa, b, pb, d, ca, cb, out);
     ba.p = a->poly, ba.pose = pa, bb.p = b->poly, bb.pose = pb;
     canon_init(&c);
