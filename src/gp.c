@@ -683,8 +683,8 @@ static void event_query(vrOwner *o, vrPair *p, double t, vrPose *pa, vrPose *pb,
 
 /* the bisection's test: is the pair's distance at t at most level (d: an
  * impact; 0: touching)?  When what was measured can bound the distance
- * nearby (a gap and closest points), *near gets those bounds for times in
- * [lo, hi]. */
+ * nearby (a gap and closest points), *near (if not NULL) gets those bounds
+ * for times in [lo, hi]. */
 static int within(vrOwner *o, vrPair *p, double t, double level, double lo, double hi, vrDistBound *near)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
@@ -695,6 +695,7 @@ static int within(vrOwner *o, vrPair *p, double t, double level, double lo, doub
     vrBody_ShapePose(B, t, &pb);
     o->checks++;
     in = vrContact_Within(&A->shape, &pa, &B->shape, &pb, &p->cache, level, &seen);
+    if (!near) return in;
     near->valid = 0;
     /* bounds from a measurement within a few tolerances of the level cannot
      * decide anything beside it: not worth making */
@@ -922,18 +923,26 @@ static int inside_events(vrOwner *o, vrEvent *ev, double t, const vrPair *p, con
     return support_change(o, ev, t, p, pa, pb, c, &ap);
 }
 
-/* an impact at tau if the contact points approach there */
-static int impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
+/* An impulse event of kind at tau if the contact points approach there
+ * faster than `faster` and the pair is not more than `deeper` inside:
+ * an impact (any approach) and a touch share it. */
+static int impulse_at(vrOwner *o, vrEvent *ev, vrPair *p, double tau, int kind, double faster, double deeper)
 {
     vrPose pa, pb;
     vrContact c;
     vrApproach ap;
     event_query(o, p, tau, &pa, &pb, &c);
-    if (c.npoints == 0) return 0;
+    if (c.npoints == 0 || c.dist < -deeper) return 0;
     approach(o, p, tau, &pa, &pb, &c, &ap);
-    if (ap.umin >= 0) return 0;
-    impulse_event(o, ev, VR_EV_IMPACT, tau, p, &c, &ap);
+    if (!(ap.umin < -faster)) return 0;
+    impulse_event(o, ev, kind, tau, p, &c, &ap);
     return 1;
+}
+
+/* an impact at tau if the contact points approach there */
+static int impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
+{
+    return impulse_at(o, ev, p, tau, VR_EV_IMPACT, 0, INFINITY);
 }
 
 /* A pair inside the envelope at the last grid point found overlapping at
@@ -948,15 +957,7 @@ static int impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
  * ever smaller ones). */
 static int touch(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
 {
-    vrPose pa, pb;
-    vrContact c;
-    vrApproach ap;
-    event_query(o, p, tau, &pa, &pb, &c);
-    if (c.npoints == 0 || c.dist < -VR_PENETRATION_TOL) return 0;
-    approach(o, p, tau, &pa, &pb, &c, &ap);
-    if (!(ap.umin < -VR_V_EPS)) return 0;
-    impulse_event(o, ev, VR_EV_CONTACT, tau, p, &c, &ap);
-    return 1;
+    return impulse_at(o, ev, p, tau, VR_EV_CONTACT, VR_V_EPS, VR_PENETRATION_TOL);
 }
 
 /* heap = 0 is the thesis's ablation: every pair looked at fully, every
@@ -1272,8 +1273,7 @@ static void collect_due(vrOwner *o, double t)
  * (contact.h), so a walk within VR_QUICK_CLEAR of touching says maybe. */
 static int overlaps(vrOwner *o, int pi, double t)
 {
-    vrDistBound unused;
-    return within(o, &o->pair[pi], t, VR_QUICK_CLEAR, t, t, &unused);
+    return within(o, &o->pair[pi], t, VR_QUICK_CLEAR, t, t, NULL);
 }
 
 /* an event found so far comes before t */
