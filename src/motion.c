@@ -143,14 +143,21 @@ static void subflow(const vrBody *b, int k, double s, vrRotState *st)
     st->Q = quat_mul(st->Q, r);
 }
 
+/* the flows of x for s, y for h/2, z for h, y for h/2: a step of h whose
+ * closing x flow is left open */
+static void open_flows(const vrBody *b, double s, double h, vrRotState *st)
+{
+    subflow(b, 0, s, st);
+    subflow(b, 1, 0.5 * h, st);
+    subflow(b, 2, h, st);
+    subflow(b, 1, 0.5 * h, st);
+}
+
 /* Strang splitting, symmetric in time (second order, symplectic): the
  * flows of x for h/2, y for h/2, z for h, y for h/2, x for h/2 */
 static void rot_step(const vrBody *b, double h, vrRotState *st)
 {
-    subflow(b, 0, 0.5 * h, st);
-    subflow(b, 1, 0.5 * h, st);
-    subflow(b, 2, h, st);
-    subflow(b, 1, 0.5 * h, st);
+    open_flows(b, 0.5 * h, h, st);
     subflow(b, 0, 0.5 * h, st);
 }
 
@@ -160,10 +167,7 @@ static void rot_step(const vrBody *b, double h, vrRotState *st)
  * anchor) is whole.  One step on from st: */
 static void open_step(const vrBody *b, double h, vrRotState *st)
 {
-    subflow(b, 0, st->step == 0 ? 0.5 * h : h, st);
-    subflow(b, 1, 0.5 * h, st);
-    subflow(b, 2, h, st);
-    subflow(b, 1, 0.5 * h, st);
+    open_flows(b, st->step == 0 ? 0.5 * h : h, h, st);
     st->step++;
 }
 
@@ -207,14 +211,11 @@ static quat general_orientation(vrBody *b, double tau)
     double rest = tau - (double)n * b->rc.h;
     if (n == 0) {
         if (rest > 0) rot_step(b, rest, &st);
-    } else {                      /* step n's closing x flow joins the rest's opening one */
-        subflow(b, 0, 0.5 * (b->rc.h + rest), &st);
-        if (rest > 0) {
-            subflow(b, 1, 0.5 * rest, &st);
-            subflow(b, 2, rest, &st);
-            subflow(b, 1, 0.5 * rest, &st);
-            subflow(b, 0, 0.5 * rest, &st);
-        }
+    } else if (rest > 0) {        /* step n's closing x flow joins the rest's opening one */
+        open_flows(b, 0.5 * (b->rc.h + rest), rest, &st);
+        subflow(b, 0, 0.5 * rest, &st);
+    } else {
+        subflow(b, 0, 0.5 * b->rc.h, &st);
     }
     return quat_mul(quat_normalize(st.Q), quat_conj(b->principal));
 }
