@@ -150,8 +150,8 @@ def tunnelled(lines, plates, reach, room):
                 if half[2] > 0.01:
                     continue
                 a, b = (tuple(sum(R[i][j] * (p[i] - c[i]) for i in range(3)) for j in range(3)) for p in (last[name], x))
-                room = reach[name] + moved
-                inside = all(abs(q[k]) < half[k] - room for q in (a, b) for k in (0, 1))
+                margin = reach[name] + moved
+                inside = all(abs(q[k]) < half[k] - margin for q in (a, b) for k in (0, 1))
                 if inside and a[2] * b[2] < 0:
                     return "%s went through a plate at t %s" % (name, f[1])
         last[name] = x
