@@ -108,12 +108,18 @@ void vrClosest_SegmentParams(vec3 p0, vec3 p1, vec3 q0, vec3 q1, double *s, doub
  * to tol: leaving through the worst plane never increases the distance
  * (Mirtich sec. 5.2).  Planes are evaluated from the stored geometry, in
  * the form that costs fewest flops. */
-typedef struct Worst { double score; vrFeature nbr; int found; } Worst;
+typedef struct Worst { double score, slack2; vrFeature nbr; int found; } Worst;
 
-/* plane excess s / sqrt(l2) against the worst so far */
+/* plane excess s / sqrt(l2) against the worst so far; slack2 keeps the
+ * square of the largest excess let pass as within tol */
 static inline void consider(Worst *w, double s, double l2, double tol, int type, int index)
 {
-    if (s <= 0 || s * s <= tol * tol * l2 || (w->found && s * s <= w->score * l2)) return;
+    if (s <= 0) return;
+    if (s * s <= tol * tol * l2) {
+        if (s * s > w->slack2 * l2) w->slack2 = s * s / l2;
+        return;
+    }
+    if (w->found && s * s <= w->score * l2) return;
     w->score = s * s / l2;
     w->nbr = feat(type, index);
     w->found = 1;
@@ -164,16 +170,18 @@ static void face_region(const vrPolyhedron *p, int f, vec3 x, double tol, Worst 
 }
 
 /* the neighbour beyond the region plane of f that x violates most; 0 when x
- * lies in f's region (within tol) */
-static int worst_violation(const vrPolyhedron *p, vrFeature f, vec3 x, double tol, vrFeature *nbr)
+ * lies in f's region (within tol), and then *slack2 (if not NULL) is raised
+ * to the square of the largest excess let pass */
+static int worst_violation(const vrPolyhedron *p, vrFeature f, vec3 x, double tol, vrFeature *nbr, double *slack2)
 {
     Worst w;
     w.found = 0;
-    w.score = 0;
+    w.score = w.slack2 = 0;
     if (f.type == VR_VERTEX) vertex_region(p, f.index, x, tol, &w);
     else if (f.type == VR_EDGE) edge_region(p, f.index, x, tol, &w);
     else face_region(p, f.index, x, tol, &w);
     if (w.found) *nbr = w.nbr;
+    else if (slack2 && w.slack2 > *slack2) *slack2 = w.slack2;
     return w.found;
 }
 
@@ -272,6 +280,7 @@ typedef struct Walk {
     vec3 t;
     vrFeature f[2];
     double tol;
+    double slack2;       /* this step's largest region excess let pass as within tol, squared */
     vec3 c[2];           /* closest points of the final pair, frame 0 */
     double pen_dist;     /* on penetration: <= 0, and where (frame 0) */
     vec3 pen_point;
@@ -311,8 +320,8 @@ static int vertex_vertex(Walk *w)
 {
     vrFeature nbr;
     vec3 x1 = vert_in_other(w, 1, w->f[1].index);
-    if (worst_violation(w->p[0], w->f[0], x1, w->tol, &nbr)) return move(w, 0, nbr);
-    if (worst_violation(w->p[1], w->f[1], vert_in_other(w, 0, w->f[0].index), w->tol, &nbr)) return move(w, 1, nbr);
+    if (worst_violation(w->p[0], w->f[0], x1, w->tol, &nbr, &w->slack2)) return move(w, 0, nbr);
+    if (worst_violation(w->p[1], w->f[1], vert_in_other(w, 0, w->f[0].index), w->tol, &nbr, &w->slack2)) return move(w, 1, nbr);
     return done(w, w->p[0]->vert[w->f[0].index], x1);
 }
 
@@ -322,10 +331,10 @@ static int vertex_edge(Walk *w, int i)
     int j = 1 - i;
     vec3 x = vert_in_other(w, i, w->f[i].index), q, qi;
     vrFeature nbr;
-    if (worst_violation(w->p[j], w->f[j], x, w->tol, &nbr)) return move(w, j, nbr);
+    if (worst_violation(w->p[j], w->f[j], x, w->tol, &nbr, &w->slack2)) return move(w, j, nbr);
     q = closest_on_feature(w->p[j], w->f[j], x);
     qi = to_other(w, j, q);
-    if (worst_violation(w->p[i], w->f[i], qi, w->tol, &nbr)) return move(w, i, nbr);
+    if (worst_violation(w->p[i], w->f[i], qi, w->tol, &nbr, &w->slack2)) return move(w, i, nbr);
     /* side 0's points are in frame 0 already: the vertex (i = 0) or q (i = 1) */
     return i == 0 ? done(w, w->p[0]->vert[w->f[0].index], qi) : done(w, q, x);
 }
@@ -351,7 +360,7 @@ static int vertex_face(Walk *w, int i)
     vec3 x = vert_in_other(w, i, v), n_i;
     vrFeature nbr;
     double h;
-    if (worst_violation(q, w->f[j], x, w->tol, &nbr)) return move(w, j, nbr);
+    if (worst_violation(q, w->f[j], x, w->tol, &nbr, &w->slack2)) return move(w, j, nbr);
     h = face_height(q, f, x);
     n_i = rotate_other(w, j, q->face_normal[f]);
     /* an edge of v leading toward the plane lowers |h| */
@@ -416,13 +425,14 @@ static int edge_edge(Walk *w)
     vrClosest_SegmentParams(a0, a1, b0, b1, &s, &t);
     c0 = vec3_lerp(a0, a1, s);
     c1 = vec3_lerp(b0, b1, t);
-    if (worst_violation(w->p[0], w->f[0], c1, w->tol, &nbr)) return move(w, 0, nbr);
-    if (worst_violation(w->p[1], w->f[1], to_other(w, 0, c0), w->tol, &nbr)) return move(w, 1, nbr);
+    if (worst_violation(w->p[0], w->f[0], c1, w->tol, &nbr, &w->slack2)) return move(w, 0, nbr);
+    if (worst_violation(w->p[1], w->f[1], to_other(w, 0, c0), w->tol, &nbr, &w->slack2)) return move(w, 1, nbr);
     return done(w, c0, c1);
 }
 
 static int walk_step(Walk *w)
 {
+    w->slack2 = 0;
     switch (w->f[0].type * 3 + w->f[1].type) {
     case VR_VERTEX * 3 + VR_VERTEX: return vertex_vertex(w);
     case VR_VERTEX * 3 + VR_EDGE: return vertex_edge(w, 0);
@@ -583,6 +593,55 @@ static void walk_init(Walk *w, const vrPolyhedron *a, const vrPose *pa, const vr
     }
 }
 
+/* the distance between the bodies is at least this: their extents along
+ * the unit direction u (frame 0) from a to b, each climbed from a vertex of
+ * its final feature (usually no step) */
+static double separation_along(const Walk *w, vec3 u)
+{
+    vec3 u1 = vec3_neg(rotate_other(w, 0, u));
+    int top_a = vrPolyhedron_Climb(w->p[0], u, vrFeature_Vertex(w->p[0], w->f[0]), NULL);
+    int top_b = vrPolyhedron_Climb(w->p[1], u1, vrFeature_Vertex(w->p[1], w->f[1]), NULL);
+    return vec3_dot(u, w->t) - vec3_dot(u1, w->p[1]->vert[top_b]) - vec3_dot(u, w->p[0]->vert[top_a]);
+}
+
+/* two edges' unit cross product, pointing along d; zero for edges near
+ * parallel */
+static vec3 edges_normal(const Walk *w, vec3 d)
+{
+    const vrPolyhedron *a = w->p[0], *b = w->p[1];
+    const int *ea = a->edge_v[w->f[0].index], *eb = b->edge_v[w->f[1].index];
+    vec3 da = vec3_sub(a->vert[ea[1]], a->vert[ea[0]]);
+    vec3 db = rotate_other(w, 1, vec3_sub(b->vert[eb[1]], b->vert[eb[0]]));
+    vec3 n = vec3_cross(da, db);
+    double l = vec3_len(n);
+    if (!(l > 1e-3 * vec3_len(da) * vec3_len(db))) return vec3_zero();
+    return vec3_scale(n, (vec3_dot(n, d) < 0 ? -1 : 1) / l);
+}
+
+/* Does a plane separate the bodies as far apart as the final pair's closest
+ * points are (to 0.1 tol)?  A vertex over a face is measured along the
+ * face's normal, and the vertex's edges were checked to rise: yes.  Else
+ * the direction comes from the closest points, and the region tests let
+ * pass an excess up to w->tol: at a gap g that tilts it by up to tol/g,
+ * and a face of size D beyond the feature then reaches tol D/g past the
+ * plane (two boxes of a stack overlapping by 2e-7 m ended on crossing
+ * edges 1.8e-7 m apart, the direction off by 1.5e-6 rad).  When the
+ * excess let pass, or rounding, could tilt it that far, each body's extent
+ * along it is climbed; its rounding too grows as 1/g, so two edges' cross
+ * product, exact, is tried as well. */
+static int separated(const Walk *w)
+{
+    vec3 d = vec3_sub(w->c[1], w->c[0]), n;
+    double g = vec3_len(d), want = g - 0.1 * w->tol, size = 2 * (w->p[0]->r_out + w->p[1]->r_out);
+    if (w->f[0].type == VR_FACE || w->f[1].type == VR_FACE) return 1;
+    if (!(g > 0)) return 1;   /* touching: contact.c decides those from a fixed start */
+    if (g >= 1e-3 * size && w->slack2 * size * size <= 0.01 * w->tol * w->tol * g * g) return 1;
+    if (separation_along(w, vec3_scale(d, 1 / g)) >= want) return 1;
+    if (w->f[0].type != VR_EDGE || w->f[1].type != VR_EDGE) return 0;
+    n = edges_normal(w, d);
+    return vec3_len2(n) > 0 && separation_along(w, n) >= want;
+}
+
 /* the walk, or with `at_once` the exhaustive search without walking */
 static double pair_query(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb,
                          vrWalkCache *cache, vec3 *ca, vec3 *cb, int *steps, int *penetrating_out, int at_once)
@@ -596,6 +655,10 @@ static double pair_query(const vrPolyhedron *a, const vrPose *pa, const vrPolyhe
             r = exhaustive(&w);
             if (cache) cache->fallbacks++;
         }
+    if (r == DONE && !at_once && !separated(&w)) {
+        r = exhaustive(&w);
+        if (cache) cache->fallbacks++;
+    }
     if (cache) {
         cache->a = w.f[0];
         cache->b = w.f[1];
@@ -635,7 +698,7 @@ static int point_step(const vrPolyhedron *p, vrFeature *f, vec3 x, double tol)
 {
     vrFeature nbr;
     double smax;
-    if (worst_violation(p, *f, x, tol, &nbr)) {
+    if (worst_violation(p, *f, x, tol, &nbr, NULL)) {
         *f = nbr;
         return GO;
     }

@@ -91,29 +91,6 @@ typedef struct Body { const vrPolyhedron *p; const vrPose *pose; } Body;
 
 static vec3 world_vert(const Body *b, int i) { return vrPose_apply(b->pose, b->p->vert[i]); }
 
-/* A neighbour of v higher along d (body frame), until none is.  *gap, if
- * not NULL, receives how far the top stands above its highest neighbour. */
-static int climb(const vrPolyhedron *p, vec3 d, int v, double *gap)
-{
-    double h = vec3_dot(d, p->vert[v]), below = -HUGE_VAL;
-    int k = p->vert_edge_start[v];
-    while (k < p->vert_edge_start[v + 1]) {
-        int w = vrPolyhedron_OtherEnd(p, p->vert_edge[k], v);
-        double hw = vec3_dot(d, p->vert[w]);
-        if (hw > h) { /* move up and scan the new star */
-            v = w;
-            h = hw;
-            below = -HUGE_VAL;
-            k = p->vert_edge_start[v];
-            continue;
-        }
-        if (hw > below) below = hw;
-        k++;
-    }
-    if (gap) *gap = h - below;
-    return v;
-}
-
 /* Breadth-first search from `seed` over the vertices with d.v >= floor (body
  * frame).  On a convex polytope this set is connected whenever it holds the
  * top vertex: every other vertex has a higher neighbour. */
@@ -138,7 +115,7 @@ static int support_set(const Body *b, vec3 dir, int start, IntSet *out)
 {
     vec3 d = mat33_tmulv(&b->pose->R, dir);
     double top, gap;
-    int v = climb(b->p, d, start, &gap), i, n = 0;
+    int v = vrPolyhedron_Climb(b->p, d, start, &gap), i, n = 0;
     if (gap > SUPPORT_TOL) return set_add(out, v); /* a lone top vertex: the common case */
     if (collect(b->p, d, v, vec3_dot(d, b->p->vert[v]) - SUPPORT_TOL, out)) return -1;
     top = vec3_dot(d, b->p->vert[out->v[0]]);
@@ -157,14 +134,6 @@ typedef struct Support {
     int kind, index;   /* VR_VERTEX / VR_EDGE / VR_FACE and its index */
     IntSet v;          /* its vertices, ascending */
 } Support;
-
-/* a vertex of the walk's feature f: where a search on the graph starts */
-static int feature_vertex(const vrPolyhedron *p, vrFeature f)
-{
-    if (f.type == VR_VERTEX) return f.index;
-    if (f.type == VR_EDGE) return p->edge_v[f.index][0];
-    return p->face_vert[p->face_start[f.index]];
-}
 
 static int edge_between(const vrPolyhedron *p, int v, int w)
 {
@@ -235,7 +204,7 @@ static int support_feature(const Body *b, vec3 dir, vrFeature from, Support *s)
         s->index = from.index;
         return set_to_face(p, s->index, &s->v);
     }
-    if (support_set(b, dir, feature_vertex(p, from), &s->v)) return -1;
+    if (support_set(b, dir, vrFeature_Vertex(p, from), &s->v)) return -1;
     if (s->v.n == 2 && (s->index = edge_between(p, s->v.v[0], s->v.v[1])) >= 0) {
         s->kind = VR_EDGE;
         return 0;
@@ -245,7 +214,7 @@ static int support_feature(const Body *b, vec3 dir, vrFeature from, Support *s)
         return set_to_face(p, s->index, &s->v);
     }
     s->kind = VR_VERTEX;
-    s->index = s->v.n == 1 ? s->v.v[0] : climb(p, d, s->v.v[0], NULL);
+    s->index = s->v.n == 1 ? s->v.v[0] : vrPolyhedron_Climb(p, d, s->v.v[0], NULL);
     s->v.n = 0;
     return set_add(&s->v, s->index);
 }
@@ -396,7 +365,7 @@ typedef struct Gap { const Body *a, *b; vec3 c; int va, vb; } Gap;
 
 static double support_height(const Body *b, vec3 u, int v)
 {
-    return vec3_dot(u, world_vert(b, climb(b->p, mat33_tmulv(&b->pose->R, u), v, NULL)));
+    return vec3_dot(u, world_vert(b, vrPolyhedron_Climb(b->p, mat33_tmulv(&b->pose->R, u), v, NULL)));
 }
 
 static double gap_along(const Gap *g, vec3 u)
@@ -750,7 +719,7 @@ static int poly_finish(const vrShape *a, const vrPose *pa, const vrShape *b, con
     if (pen || !(dw > 0)) return penetration_contact(a, pa, b, pb, d, ca, cb, out);
     ba.p = a->poly, ba.pose = pa, bb.p = b->poly, bb.pose = pb;
     canon_init(&c);
-    g.a = &ba, g.b = &bb, g.va = feature_vertex(ba.p, cache->a), g.vb = feature_vertex(bb.p, cache->b);
+    g.a = &ba, g.b = &bb, g.va = vrFeature_Vertex(ba.p, cache->a), g.vb = vrFeature_Vertex(bb.p, cache->b);
     rc = canonical(&ba, &bb, walk_direction(&g, cache->a, cache->b, ca, cb, dw), cache->a, cache->b, &c);
     if (rc == 0 && !(c.dist > 0)) { /* the canonical features touch */
         canon_free(&c);
@@ -840,7 +809,7 @@ static int near_poly(const Body *b, vec3 c, vrWalkCache *cache, int *steps, Near
         nr->q = c;
         return 0;
     }
-    g.a = b, g.b = NULL, g.c = c, g.va = feature_vertex(b->p, f), g.vb = 0;
+    g.a = b, g.b = NULL, g.c = c, g.va = vrFeature_Vertex(b->p, f), g.vb = 0;
     dir = walk_direction(&g, f, f, q, c, dw);
     set_init(&s.v);
     if (support_feature(b, dir, f, &s)) {

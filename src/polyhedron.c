@@ -535,3 +535,24 @@ int vrPolyhedron_Superquadric(double exp1, double exp2, vec3 radii, int ures, in
     free(pts);
     return rc;
 }
+
+int vrPolyhedron_Climb(const vrPolyhedron *p, vec3 d, int v, double *gap)
+{
+    double h = vec3_dot(d, p->vert[v]), below = -HUGE_VAL;
+    int k = p->vert_edge_start[v];
+    while (k < p->vert_edge_start[v + 1]) {
+        int w = vrPolyhedron_OtherEnd(p, p->vert_edge[k], v);
+        double hw = vec3_dot(d, p->vert[w]);
+        if (hw > h) { /* move up and scan the new star */
+            v = w;
+            h = hw;
+            below = -HUGE_VAL;
+            k = p->vert_edge_start[v];
+            continue;
+        }
+        if (hw > below) below = hw;
+        k++;
+    }
+    if (gap) *gap = h - below;
+    return v;
+}

@@ -72,6 +72,11 @@ static inline int vrPolyhedron_VertDegree(const vrPolyhedron *p, int v) { return
 /* the vertex at the other end of edge e from its vertex v; branch-free, as
  * the walk's inner loops run over vertex stars */
 static inline int vrPolyhedron_OtherEnd(const vrPolyhedron *p, int e, int v) { return p->edge_v[e][0] ^ p->edge_v[e][1] ^ v; }
+/* The top vertex along d (body frame), climbing from v to a higher
+ * neighbour until none is: on a convex polyhedron that vertex is the top.
+ * *gap, if not NULL, receives how far it stands above its highest
+ * neighbour. */
+int vrPolyhedron_Climb(const vrPolyhedron *p, vec3 d, int v, double *gap);
 
 /* mass.c: fills volume, inertia_unit, r_in, r_out of a polyhedron whose
  * vertices are already centred (divergence theorem over the faces). */
