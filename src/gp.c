@@ -434,10 +434,15 @@ static void wake_boxless(void *ctx, int id) { wake_pairs_of(ctx, id); }
 /* A new frame: new boxes, and the dormant pairs whose boxes now overlap are
  * woken, to be evaluated at its start (the broadphase sweeps the boxes, so
  * the pairs that stay apart, nearly all of them among a thousand bodies,
- * are not looked at).  Without the map or memory, every pair wakes. */
+ * are not looked at).  Without the map or memory, every pair wakes.
+ * `hit` is per frame (rest.c): a worker's copies must forget it as the
+ * shell's bodies do, or an update that is no impulse (a push-out, a
+ * support change) carries an old hit back to the shell. */
 static void new_frame(vrOwner *o, const vrGrid *g)
 {
     int i;
+    for (i = 0; i < o->bodycap; i++)
+        if (o->body[i]) o->body[i]->hit = 0;
     if (!o->bp.map.cap || vrBroad_NewFrame(&o->bp, o->body, o->bodycap, g->t0, g->T, wake_met, wake_boxless, o) != 0)
         for (i = 0; i < o->npair; i++) wake(o, i);
 }
