@@ -1366,15 +1366,20 @@ int vrOwner_SupportCandidates(vrOwner *o, double t, const unsigned char *want, i
 
 /* ---- start-up overlap check ---------------------------------------------------- */
 
-int vrOwner_Overlapping(vrOwner *o, double t, double tol, int (*out)[2], int max)
+int vrOwner_Overlapping(vrOwner *o, double t, double tol, const int *ids, int nids, int (*out)[2], int max)
 {
+    unsigned char *mine = calloc((size_t)o->bodycap + 1, 1);
     int i, n = 0;
+    if (!mine) return -1;
+    for (i = 0; i < nids; i++)
+        if (ids[i] >= 0 && ids[i] < o->bodycap) mine[ids[i]] = 1;
     sort_pairs(o, &o->flagged);
     for (i = 0; i < o->flagged.n; i++) {
         vrPair *p = &o->pair[o->flagged.v[i]];
         vrPose pa, pb;
         vrContact c;
         vec3 dir;
+        if (!(mine[p->a] || mine[p->b])) continue;
         if (!p->scheduled || sphere_gap(o, p, t, &dir) > tol) continue;   /* bounding spheres apart: no overlap */
         query(o, p, t, 0, &pa, &pb, &c);
         if (c.dist < -tol) {
@@ -1382,6 +1387,7 @@ int vrOwner_Overlapping(vrOwner *o, double t, double tol, int (*out)[2], int max
             n++;
         }
     }
+    free(mine);
     return n;
 }
 

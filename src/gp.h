@@ -57,9 +57,11 @@ long vrOwner_PairCount(const vrOwner *o);
 /* these bodies were re-anchored: their pairs are re-evaluated at the next
  * span start, and any pending event of theirs is dropped */
 void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n);
-/* pairs to be evaluated that overlap deeper than tol at time t: fills up to
- * max (a, b) id pairs, returns how many overlap */
-int vrOwner_Overlapping(vrOwner *o, double t, double tol, int (*out)[2], int max);
+/* the pairs to be evaluated with a body among ids[0..nids) that overlap
+ * deeper than tol at time t: fills up to max (a, b) id pairs, returns how
+ * many overlap, -1 on no memory.  Ids this owner holds no body for are
+ * ignored. */
+int vrOwner_Overlapping(vrOwner *o, double t, double tol, const int *ids, int nids, int (*out)[2], int max);
 /* the first event in the span the grid covers: 1 (with *ev), 0 for none,
  * -1 on no memory.  allow_instant = 0 suppresses events at the span start
  * (after VR_INSTANT_MAX of them at one instant). */

@@ -624,10 +624,12 @@ unsigned char *vrWorld_PendingMarks(const vrWorld *w)
     unsigned char *mark = calloc((size_t)w->nobj + 1, 1);
     int i;
     /* An owed overlap check (an edit since the last start, or a start
-     * refused) looks at the flagged pairs: owners made anew now, e.g. for a
-     * new pair set after an edit that only changed a mass, must flag them
-     * all, or an overlap the old owners had flagged goes unseen. */
-    if (mark && w->check_overlaps) memset(mark, 1, (size_t)w->nobj);
+     * refused) looks at the flagged pairs of the bodies it is owed for:
+     * owners made anew now, e.g. for a new pair set after an edit that only
+     * changed a mass, must flag those, or an overlap the old owners had
+     * flagged goes unseen. */
+    for (i = 0; mark && i < w->nobj; i++)
+        if (w->obj[i] && w->obj[i]->overlap_owed) mark[i] = 1;
     for (i = 0; mark && i < w->pending.n; i++)
         if (w->pending.body[i].id >= 0 && w->pending.body[i].id < w->nobj) mark[w->pending.body[i].id] = 1;
     return mark;
@@ -659,6 +661,7 @@ static int make_live(vrWorld *w, char *err, size_t n)
         if (w->owner && add_pairs_of(w, i) != 0) return fail_msg(err, n, "out of memory");
         w->structure++;
         w->check_overlaps = 1;
+        o->overlap_owed = 1;
     }
     return rebuild_dynamic_list(w) == 0 ? 0 : fail_msg(err, n, "out of memory");
 }
@@ -716,13 +719,26 @@ static int make_serial_owner(vrWorld *w)
 
 static const vrOwnerSet *owners(const vrWorld *w);
 
+/* SPEC 1.4: the pairs of the bodies added or moved since the last start
+ * that checked (every body at the first start); the other pairs were
+ * looked after by the run.  Serial and workers check exactly these, so
+ * they agree whatever pairs their owners have flagged. */
 static int report_overlaps(vrWorld *w, char *err, size_t n)
 {
-    int pairs[MAX_REPORTED_OVERLAPS][2], k, i;
+    int pairs[MAX_REPORTED_OVERLAPS][2], k, i, nids = 0;
+    int *ids = malloc((size_t)w->nobj * sizeof *ids + 1);
     size_t len;
-    k = owners(w)->overlapping(w, VR_START_OVERLAP, pairs, MAX_REPORTED_OVERLAPS, err, n);
+    if (!ids) return fail_msg(err, n, "out of memory");
+    for (i = 0; i < w->nobj; i++)
+        if (w->obj[i] && w->obj[i]->live && w->obj[i]->overlap_owed) ids[nids++] = i;
+    k = owners(w)->overlapping(w, VR_START_OVERLAP, ids, nids, pairs, MAX_REPORTED_OVERLAPS, err, n);
+    free(ids);
     if (k < 0) return -1;
-    if (k == 0) return 0;
+    if (k == 0) {
+        for (i = 0; i < w->nobj; i++)
+            if (w->obj[i]) w->obj[i]->overlap_owed = 0;
+        return 0;
+    }
     if (!err || !n) return -1;
     snprintf(err, n, "objects interpenetrate, not starting:");
     for (i = 0; i < k && i < MAX_REPORTED_OVERLAPS; i++) {
@@ -843,10 +859,13 @@ static int serial_respond(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err
 
 static void serial_end_frame(vrWorld *w, double T) { vrOwner_Advance(w->owner, T); }
 
-static int serial_overlapping(vrWorld *w, double tol, int (*out)[2], int max, char *err, size_t n)
+static int serial_overlapping(vrWorld *w, double tol, const int *ids, int nids, int (*out)[2], int max, char *err,
+                              size_t n)
 {
+    int k;
     if (deliver(w) != 0) return fail_msg(err, n, "out of memory");
-    return vrOwner_Overlapping(w->owner, w->t, tol, out, max);
+    k = vrOwner_Overlapping(w->owner, w->t, tol, ids, nids, out, max);
+    return k < 0 ? fail_msg(err, n, "out of memory") : k;
 }
 
 static int serial_candidates(vrWorld *w, double T, const unsigned char *want, vrCandidates *out, char *err, size_t n)
@@ -918,6 +937,7 @@ static int apply_live_edit(vrWorld *w, vrObject *o, const vrObjectDef *old, char
     }
     if (!o->built) w->structure++;
     w->check_overlaps = 1;
+    o->overlap_owed = 1;
     vrBody_Pose(&o->body, w->t, &pose);
     omega = vrBody_Omega(&o->body, &pose);
     w->update.n = 0;

@@ -25,6 +25,8 @@ typedef struct vrObject {
     double *draw_verts, *draw_normals;
     int *draw_face_start, *draw_face_verts;
     vrBody body;
+    int overlap_owed;        /* added, or moved by an edit, since the last start that
+                                checked: its pairs are checked at the next (SPEC 1.4) */
     vrPose frame_pose;       /* at the end of the last frame (SPEC 3.5) */
     int have_frame_pose;
 } vrObject;
@@ -74,8 +76,9 @@ typedef struct vrOwnerSet {
     /* every clock moves to ev->t; the responder's new states */
     int (*respond)(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, size_t n);
     void (*end_frame)(vrWorld *w, double T);
-    /* pairs overlapping deeper than tol among those to be evaluated */
-    int (*overlapping)(vrWorld *w, double tol, int (*out)[2], int max, char *err, size_t n);
+    /* the pairs of the bodies ids[0..nids) overlapping deeper than tol */
+    int (*overlapping)(vrWorld *w, double tol, const int *ids, int nids, int (*out)[2], int max, char *err,
+                       size_t n);
     /* frame end T: contacts that could carry the bodies with want[id] */
     int (*support_candidates)(vrWorld *w, double T, const unsigned char *want, vrCandidates *out,
                               char *err, size_t n);

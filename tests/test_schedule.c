@@ -294,6 +294,39 @@ static int test_a_push_out_in_a_later_frame_is_no_hit(void)
     return 0;
 }
 
+/* SPEC 1.4: a start after edits checks the pairs of the edited and new
+ * bodies; the serial owner and the workers are given the same bodies, so
+ * they check the same pairs whatever each has flagged (a worker made anew
+ * flagged them all and refused a start over an overlap, left by a busy
+ * stack, that the serial run did not look at: edit fuzzer seed 1476) */
+static int test_the_start_check_looks_at_the_bodies_it_is_given(void)
+{
+    vrBody a, b, c;
+    vrFlight f;
+    vrParams p;
+    vrOwner *o = vrOwner_Create();
+    int out[4][2], none[1] = {0}, of_a[1] = {0}, of_c[1] = {2}, junk[3] = {-1, 99, 1 << 30}, na, nc, nj, nn;
+    ENSURE(o != NULL);
+    closing_pair(&a, &b, 0.19, &f);           /* 1 cm inside each other */
+    closing_pair(&c, &b, 5, &f);
+    c.id = 2;
+    closing_pair(&a, &b, 0.19, &f);
+    memset(&p, 0, sizeof p);
+    p.d = 0.01, p.flight = f, p.use_heap = 1;
+    vrOwner_SetParams(o, &p);
+    ENSURE(vrOwner_HoldBody(o, 0, &a) == 0 && vrOwner_HoldBody(o, 1, &b) == 0 && vrOwner_HoldBody(o, 2, &c) == 0);
+    ENSURE(vrOwner_AddPair(o, 0, 1) == 0 && vrOwner_AddPair(o, 0, 2) == 0 && vrOwner_AddPair(o, 1, 2) == 0);
+    na = vrOwner_Overlapping(o, 0, 1e-6, of_a, 1, out, 4);
+    ENSURE(na == 1 && out[0][0] == 0 && out[0][1] == 1);
+    nc = vrOwner_Overlapping(o, 0, 1e-6, of_c, 1, out, 4);
+    nn = vrOwner_Overlapping(o, 0, 1e-6, none, 0, out, 4);
+    nj = vrOwner_Overlapping(o, 0, 1e-6, junk, 3, out, 4);
+    printf("    overlapping pairs of a: %d, of c: %d, of none: %d, of unknown ids: %d\n", na, nc, nn, nj);
+    ENSURE(nc == 0 && nn == 0 && nj == 0);
+    vrOwner_Free(o);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     test_init(argc, argv);
@@ -302,5 +335,6 @@ int main(int argc, char **argv)
     RUN_TEST(test_impact_time_is_the_upper_end_after_48_halvings);
     RUN_TEST(test_impact_times_of_spinning_boxes_are_48_halvings);
     RUN_TEST(test_a_push_out_in_a_later_frame_is_no_hit);
+    RUN_TEST(test_the_start_check_looks_at_the_bodies_it_is_given);
     return test_summary();
 }

@@ -695,7 +695,8 @@ static void snapshot(vrWorld *w, vrSgp *s)
     for (i = 0; i < s->n; i++) s->snap_counts[i] = counts_of(s, i);
 }
 
-static int encode_frame_start(vrWorld *w, vrSgp *s, const vrGrid *g, int allow, int check)
+/* check: ids[0..nids) are the bodies whose overlaps are asked for */
+static int encode_frame_start(vrWorld *w, vrSgp *s, const vrGrid *g, int allow, int check, const int *ids, int nids)
 {
     vroc_frame_start_t m;
     vrWireStates ws;
@@ -711,7 +712,11 @@ static int encode_frame_start(vrWorld *w, vrSgp *s, const vrGrid *g, int allow, 
     m.check = (int8_t)check;
     m.nstates = ws.n;
     m.states = ws.m;
+    m.owed = malloc((size_t)nids * sizeof *m.owed + 1);
+    if (!m.owed) r = -1;
+    for (m.nowed = 0; m.owed && m.nowed < nids; m.nowed++) m.owed[m.nowed] = ids[m.nowed];
     if (r == 0) r = VR_ENCODE(&s->req, vroc_frame_start_t, &m);
+    free(m.owed);
     vrWire_FreeStates(&ws);
     s->req_channel = VR_CH_FRAME;
     return r;
@@ -767,7 +772,7 @@ static int sgp_first_event(vrWorld *w, const vrGrid *g, int allow, vrEvent *ev, 
     s->error[0] = 0;
     if (!s->frame_open) {
         snapshot(w, s);
-        r = encode_frame_start(w, s, g, allow, 0);
+        r = encode_frame_start(w, s, g, allow, 0, NULL, 0);
         if (r == 0) r = delivered(w, s);
         s->frame_open = 1;
     } else {
@@ -809,7 +814,8 @@ static int cmp_pair(const void *x, const void *y)
     return a[0] != b[0] ? (a[0] < b[0] ? -1 : 1) : a[1] < b[1] ? -1 : a[1] > b[1];
 }
 
-static int sgp_overlapping(vrWorld *w, double tol, int (*out)[2], int max, char *err, size_t n)
+static int sgp_overlapping(vrWorld *w, double tol, const int *ids, int nids, int (*out)[2], int max, char *err,
+                           size_t n)
 {
     vrSgp *s = w->sgp;
     vrGrid g;
@@ -822,7 +828,7 @@ static int sgp_overlapping(vrWorld *w, double tol, int (*out)[2], int max, char 
         s->seq++;
         s->error[0] = 0;
         s->noverlap = 0;
-        if (encode_frame_start(w, s, &g, 1, 1) != 0) return snprintf(err, n, "out of memory"), -1;
+        if (encode_frame_start(w, s, &g, 1, 1, ids, nids) != 0) return snprintf(err, n, "out of memory"), -1;
         if (!exchange(s, WAIT_EARLIEST, -1)) break;
         if (setup_all(w, s, err, n) != 0) return -1;   /* a worker died: deal again and ask again */
     }

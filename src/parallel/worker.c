@@ -189,12 +189,19 @@ static void look_ahead(vrWorker *k, int64_t seq, const vroc_grid_t *grid, int al
     send_earliest(k, seq, r == 1, &k->first, 0, NULL, NULL, r < 0 ? "out of memory" : NULL);
 }
 
-static void check_overlaps(vrWorker *k, int64_t seq, double t)
+static void check_overlaps(vrWorker *k, int64_t seq, double t, const int32_t *owed, int nowed)
 {
-    int (*pairs)[2] = NULL, nmax = 64, count, i;
+    int (*pairs)[2] = NULL, nmax = 64, count = 0, i;
+    int *ids = nowed >= 0 ? malloc((size_t)nowed * sizeof *ids + 1) : NULL;
     int32_t *a, *b;
     pairs = malloc((size_t)nmax * sizeof *pairs);
-    count = pairs ? vrOwner_Overlapping(k->owner, t, VR_START_OVERLAP, pairs, nmax) : 0;
+    for (i = 0; ids && i < nowed; i++) ids[i] = owed[i];
+    if (!ids || !pairs || (count = vrOwner_Overlapping(k->owner, t, VR_START_OVERLAP, ids, nowed, pairs, nmax)) < 0) {
+        free(pairs);             /* reported as out of memory below */
+        pairs = NULL;
+        count = 0;
+    }
+    free(ids);
     if (count > nmax) count = nmax;
     a = malloc((size_t)(count + 1) * sizeof *a);
     b = malloc((size_t)(count + 1) * sizeof *b);
@@ -254,7 +261,7 @@ static void on_frame(const lcm_recv_buf_t *rb, const char *ch, void *user)
         if (!k->silent) {
             vrOwner_Advance(k->owner, m.t);
             if (apply_states(k, m.states, m.nstates) != 0) send_earliest(k, m.seq, 0, NULL, 0, NULL, NULL, "bad body state");
-            else if (m.check) check_overlaps(k, m.seq, m.t);
+            else if (m.check) check_overlaps(k, m.seq, m.t, m.owed, m.nowed);
             else look_ahead(k, m.seq, &m.grid, m.allow_instant);
         }
     }
