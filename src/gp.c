@@ -1449,12 +1449,31 @@ static int respond_impulse(vrOwner *o, const vrEvent *ev, vrUpdate *up)
  * lifting a body against the force adds its weight times the lift to the
  * energy (a 10 kg body pushed to half a 1 cm envelope gained 0.49 J), and
  * the contact that follows at the same instant takes what approach is left. */
+/* x lies on a static body that the push along dir would drive it into */
+static int held_against(const vrBody *x, vec3 dir)
+{
+    int i;
+    for (i = 0; i < x->nsupport; i++)
+        if (x->support[i].fixed && vec3_dot(dir, x->support[i].n) < 0) return 1;
+    return 0;
+}
+
+/* The bodies are moved apart along the normal by the depth (and
+ * VR_PUSHOUT_GAP), shared by inverse mass; a body lying on a static one
+ * that its share would push into it stays, and the other takes all: a box
+ * on a light board on the floor, shared, pushed the board into the floor,
+ * whose push-out pushed it back into the box, 64 times an instant, and the
+ * overlap grew to 36 mm. */
 static int respond_pushout(vrOwner *o, const vrEvent *ev, vrUpdate *up)
 {
     vrBody *b[2] = {o->body[ev->a], o->body[ev->b]};
     double w0 = b[0]->inv_mass, w1 = b[1]->inv_mass, total = ev->depth + VR_PUSHOUT_GAP;
-    double share[2] = {w0 / (w0 + w1), w1 / (w0 + w1)}, sign[2] = {-1, 1};
+    double share[2], sign[2] = {-1, 1};
     int s;
+    if (w1 > 0 && held_against(b[0], vec3_neg(ev->n)) && !held_against(b[1], ev->n)) w0 = 0;
+    else if (w0 > 0 && held_against(b[1], ev->n) && !held_against(b[0], vec3_neg(ev->n))) w1 = 0;
+    share[0] = w0 / (w0 + w1);
+    share[1] = w1 / (w0 + w1);
     for (s = 0; s < 2; s++) {
         vrBodyState *st;
         if (b[s]->is_static) continue;
