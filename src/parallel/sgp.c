@@ -712,8 +712,7 @@ static int encode_frame_start(vrWorld *w, vrSgp *s, const vrGrid *g, int allow, 
     m.check = (int8_t)check;
     m.nstates = ws.n;
     m.states = ws.m;
-    m.owed = malloc((size_t)nids * sizeof *m.owed + 1);
-    if (!m.owed) r = -1;
+    if (check && nids > 0 && !(m.owed = malloc((size_t)nids * sizeof *m.owed))) r = -1;
     for (m.nowed = 0; m.owed && m.nowed < nids; m.nowed++) m.owed[m.nowed] = ids[m.nowed];
     if (r == 0) r = VR_ENCODE(&s->req, vroc_frame_start_t, &m);
     free(m.owed);
