@@ -1444,11 +1444,6 @@ static int respond_impulse(vrOwner *o, const vrEvent *ev, vrUpdate *up)
     return 0;
 }
 
-/* Interpenetrating bodies are pushed apart along the normal out of the
- * overlap, to VR_PUSHOUT_GAP apart, shared by inverse mass.  No further:
- * lifting a body against the force adds its weight times the lift to the
- * energy (a 10 kg body pushed to half a 1 cm envelope gained 0.49 J), and
- * the contact that follows at the same instant takes what approach is left. */
 /* x lies on a static body that the push along dir would drive it into */
 static int held_against(const vrBody *x, vec3 dir)
 {
@@ -1474,12 +1469,15 @@ static void pay_for_lift(const vrOwner *o, const vrBody *b, vrBodyState *st, vec
     st->v = vec3_madd(st->v, (left > 0 ? -sqrt(left) : 0) - into, dir);
 }
 
-/* The bodies are moved apart along the normal by the depth (and
- * VR_PUSHOUT_GAP), shared by inverse mass; a body lying on a static one
- * that its share would push into it stays, and the other takes all: a box
- * on a light board on the floor, shared, pushed the board into the floor,
- * whose push-out pushed it back into the box, 64 times an instant, and the
- * overlap grew to 36 mm. */
+/* Interpenetrating bodies are pushed apart along the normal out of the
+ * overlap, to VR_PUSHOUT_GAP apart, shared by inverse mass.  No further: a
+ * 10 kg body pushed to half a 1 cm envelope gained 0.49 J; what the lift
+ * still adds is paid from its speed (pay_for_lift), and the contact that
+ * follows at the same instant takes what approach is left.  A body lying
+ * on a static one that its share would push into it stays, and the other
+ * takes all: a box on a light board on the floor, shared, pushed the board
+ * into the floor, whose push-out pushed it back into the box, 64 times an
+ * instant, and the overlap grew to 36 mm. */
 static int respond_pushout(vrOwner *o, const vrEvent *ev, vrUpdate *up)
 {
     vrBody *b[2] = {o->body[ev->a], o->body[ev->b]};

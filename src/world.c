@@ -660,7 +660,6 @@ static int make_live(vrWorld *w, char *err, size_t n)
         if (!vrUpdate_Body(&w->pending, &o->body, w->t)) return fail_msg(err, n, "out of memory");
         if (w->owner && add_pairs_of(w, i) != 0) return fail_msg(err, n, "out of memory");
         w->structure++;
-        w->check_overlaps = 1;
         o->overlap_owed = 1;
     }
     return rebuild_dynamic_list(w) == 0 ? 0 : fail_msg(err, n, "out of memory");
@@ -720,18 +719,22 @@ static int make_serial_owner(vrWorld *w)
 static const vrOwnerSet *owners(const vrWorld *w);
 
 /* SPEC 1.4: the pairs of the bodies added or moved since the last start
- * that checked (every body at the first start); the other pairs were
- * looked after by the run.  Serial and workers check exactly these, so
- * they agree whatever pairs their owners have flagged. */
+ * that checked (every body at the first start; none owed: nothing to ask);
+ * the other pairs were looked after by the run.  Serial and workers check
+ * exactly these, so they agree whatever pairs their owners have flagged. */
 static int report_overlaps(vrWorld *w, char *err, size_t n)
 {
     int pairs[MAX_REPORTED_OVERLAPS][2], k, i, nids = 0;
-    int *ids = malloc((size_t)w->nobj * sizeof *ids + 1);
+    int *ids;
     size_t len;
+    for (i = 0; i < w->nobj; i++)
+        if (w->obj[i] && w->obj[i]->overlap_owed) break;
+    if (i == w->nobj) return 0;
+    ids = malloc((size_t)w->nobj * sizeof *ids);
     if (!ids) return fail_msg(err, n, "out of memory");
     for (i = 0; i < w->nobj; i++)
         if (w->obj[i] && w->obj[i]->live && w->obj[i]->overlap_owed) ids[nids++] = i;
-    k = owners(w)->overlapping(w, VR_START_OVERLAP, ids, nids, pairs, MAX_REPORTED_OVERLAPS, err, n);
+    k = nids ? owners(w)->overlapping(w, VR_START_OVERLAP, ids, nids, pairs, MAX_REPORTED_OVERLAPS, err, n) : 0;
     free(ids);
     if (k < 0) return -1;
     if (k == 0) {
@@ -794,10 +797,7 @@ int vrWorld_Start(vrWorld *w, char *err, size_t n)
     if (vrWorld_Ready(w, err, n) != 0 || make_live(w, err, n) != 0) return -1;
     if (w->params_dirty && apply_params(w) != 0) return fail_msg(err, n, "out of memory");
     if (choose_owners(w, err, n) != 0) return -1;
-    if (w->check_overlaps) {
-        if (report_overlaps(w, err, n) != 0) return -1;
-        w->check_overlaps = 0;
-    }
+    if (report_overlaps(w, err, n) != 0) return -1;
     w->started = 1;
     return 0;
 }
@@ -936,7 +936,6 @@ static int apply_live_edit(vrWorld *w, vrObject *o, const vrObjectDef *old, char
         return 0;
     }
     if (!o->built) w->structure++;
-    w->check_overlaps = 1;
     o->overlap_owed = 1;
     vrBody_Pose(&o->body, w->t, &pose);
     omega = vrBody_Omega(&o->body, &pose);

@@ -43,7 +43,6 @@ struct vrWorld {
     int instant;             /* responses at instant_t, the last event's time (SPEC 3.1's cap) */
     double instant_t;
     int params_dirty;        /* settings changed (world.c's PARAMS_*): for the next frame */
-    int check_overlaps;      /* objects were added or moved: check before the next frame */
     long structure;          /* bumped when objects, shapes, masses or settings change */
     vrOwner *owner;          /* serial: one owner of every pair (NULL while workers run) */
     struct vrSgp *sgp;       /* parallel: the workers (parallel/sgp.c) */

@@ -260,6 +260,36 @@ out:
     return rc;
 }
 
+/* an owner of bodies a (id 0) and b (id 1) and their pair, d = 0.01 m */
+static vrOwner *owner_of(vrBody *a, vrBody *b, const vrFlight *f)
+{
+    vrParams p;
+    vrOwner *o = vrOwner_Create();
+    memset(&p, 0, sizeof p);
+    p.d = 0.01, p.flight = *f, p.use_heap = 1;
+    if (!o) return NULL;
+    vrOwner_SetParams(o, &p);
+    if (vrOwner_HoldBody(o, 0, a) == 0 && vrOwner_HoldBody(o, 1, b) == 0 && vrOwner_AddPair(o, 0, 1) == 0) return o;
+    vrOwner_Free(o);
+    return NULL;
+}
+
+/* the owner's first event for overlapping a and b over a 0.1 s frame, a
+ * push-out, and the states its response gives in *up: 1, else 0 */
+static int pushed_out(vrBody *a, vrBody *b, const vrFlight *f, vrUpdate *up)
+{
+    vrBody *list[2] = {a, b};
+    vrOwner *o = owner_of(a, b, f);
+    vrGrid g;
+    vrEvent ev;
+    int ok;
+    vrSchedule_Grid(list, 2, 0, 0.1, 0.01, 0, f, &g);
+    ok = o && vrOwner_FirstEvent(o, &g, 1, &ev) == 1 && ev.kind == VR_EV_PUSHOUT && vrOwner_Respond(o, &ev, up) == 0;
+    printf("    first event %s, %d bodies updated\n", ok ? "a push-out" : "not a push-out", up->n);
+    vrOwner_Free(o);
+    return ok;
+}
+
 /* `hit` is per frame (rest.c): a worker's copy of a body hit in an earlier
  * frame must not send it back with an update that is no impulse (a push-out
  * here), or the shell thinks it was hit and does not let it rest, while the
@@ -268,28 +298,15 @@ static int test_a_push_out_in_a_later_frame_is_no_hit(void)
 {
     vrBody a, b;
     vrFlight f;
-    vrParams p;
-    vrGrid g;
-    vrEvent ev;
     vrUpdate up;
-    vrBody *list[2] = {&a, &b};
-    vrOwner *o = vrOwner_Create();
     int i, ok;
-    ENSURE(o != NULL);
     closing_pair(&a, &b, 0.199, &f);          /* 1 mm inside each other */
     vrBody_Anchor(&a, 0, vec3_make(0.199, 0, 0), vec3_zero(), quat_identity(), vec3_zero(), &f);
     a.hit = b.hit = 1;                        /* an impulse in the frame before */
-    memset(&p, 0, sizeof p);
-    p.d = 0.01, p.flight = f, p.use_heap = 1;
-    vrOwner_SetParams(o, &p);
-    vrSchedule_Grid(list, 2, 0, 0.1, 0.01, 0, &f, &g);
     vrUpdate_Init(&up);
-    ok = vrOwner_HoldBody(o, 0, &a) == 0 && vrOwner_HoldBody(o, 1, &b) == 0 && vrOwner_AddPair(o, 0, 1) == 0
-      && vrOwner_FirstEvent(o, &g, 1, &ev) == 1 && ev.kind == VR_EV_PUSHOUT && vrOwner_Respond(o, &ev, &up) == 0;
-    printf("    event kind %d, %d bodies updated\n", ok ? ev.kind : -1, up.n);
+    ok = pushed_out(&a, &b, &f, &up);
     for (i = 0; ok && i < up.n; i++) ok = up.body[i].hit == 0;
     vrUpdate_Free(&up);
-    vrOwner_Free(o);
     ENSURE(ok);
     return 0;
 }
@@ -303,19 +320,13 @@ static int test_the_start_check_looks_at_the_bodies_it_is_given(void)
 {
     vrBody a, b, c;
     vrFlight f;
-    vrParams p;
-    vrOwner *o = vrOwner_Create();
+    vrOwner *o;
     int out[4][2], none[1] = {0}, of_a[1] = {0}, of_c[1] = {2}, junk[3] = {-1, 99, 1 << 30}, na, nc, nj, nn;
-    ENSURE(o != NULL);
-    closing_pair(&a, &b, 0.19, &f);           /* 1 cm inside each other */
-    closing_pair(&c, &b, 5, &f);
+    closing_pair(&c, &b, 5, &f);              /* c far away */
     c.id = 2;
-    closing_pair(&a, &b, 0.19, &f);
-    memset(&p, 0, sizeof p);
-    p.d = 0.01, p.flight = f, p.use_heap = 1;
-    vrOwner_SetParams(o, &p);
-    ENSURE(vrOwner_HoldBody(o, 0, &a) == 0 && vrOwner_HoldBody(o, 1, &b) == 0 && vrOwner_HoldBody(o, 2, &c) == 0);
-    ENSURE(vrOwner_AddPair(o, 0, 1) == 0 && vrOwner_AddPair(o, 0, 2) == 0 && vrOwner_AddPair(o, 1, 2) == 0);
+    closing_pair(&a, &b, 0.19, &f);           /* a and b 1 cm inside each other */
+    ENSURE((o = owner_of(&a, &b, &f)) != NULL);
+    ENSURE(vrOwner_HoldBody(o, 2, &c) == 0 && vrOwner_AddPair(o, 0, 2) == 0 && vrOwner_AddPair(o, 1, 2) == 0);
     na = vrOwner_Overlapping(o, 0, 1e-6, of_a, 1, out, 4);
     ENSURE(na == 1 && out[0][0] == 0 && out[0][1] == 1);
     nc = vrOwner_Overlapping(o, 0, 1e-6, of_c, 1, out, 4);
@@ -336,35 +347,23 @@ static int test_a_push_out_does_not_drive_a_body_into_its_static_support(void)
 {
     vrBody a, b;
     vrFlight f;
-    vrParams p;
-    vrGrid g;
-    vrEvent ev;
     vrUpdate up;
-    vrBody *list[2] = {&a, &b};
-    vrOwner *o = vrOwner_Create();
     int i, ok, moved_a = 0;
     double lift = 0;
-    ENSURE(o != NULL);
     closing_pair(&a, &b, 0, &f);
     vrBody_Anchor(&b, 0, vec3_make(0, 0, 0.19), vec3_zero(), quat_identity(), vec3_zero(), &f);
     a.nsupport = 1;                           /* the board lies on the (static) floor, id 7 */
     a.support[0].partner = 7;
     a.support[0].n = vec3_make(0, 0, 1);
     a.support[0].fixed = 1;
-    memset(&p, 0, sizeof p);
-    p.d = 0.01, p.flight = f, p.use_heap = 1;
-    vrOwner_SetParams(o, &p);
-    vrSchedule_Grid(list, 2, 0, 0.1, 0.01, 0, &f, &g);
     vrUpdate_Init(&up);
-    ok = vrOwner_HoldBody(o, 0, &a) == 0 && vrOwner_HoldBody(o, 1, &b) == 0 && vrOwner_AddPair(o, 0, 1) == 0
-      && vrOwner_FirstEvent(o, &g, 1, &ev) == 1 && ev.kind == VR_EV_PUSHOUT && vrOwner_Respond(o, &ev, &up) == 0;
+    ok = pushed_out(&a, &b, &f, &up);
     for (i = 0; ok && i < up.n; i++) {
         if (up.body[i].id == 0) moved_a = vec3_len(up.body[i].x) != 0;
         if (up.body[i].id == 1) lift = up.body[i].x.z - 0.19;
     }
     printf("    board moved: %d, box lifted %.9g m (depth 0.01 m)\n", moved_a, lift);
     vrUpdate_Free(&up);
-    vrOwner_Free(o);
     ENSURE(ok && !moved_a);
     ENSURE_NEAR(lift, 0.01 + VR_PUSHOUT_GAP, 1e-12);
     return 0;
