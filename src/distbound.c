@@ -188,10 +188,14 @@ static double ahead_rise(const vrAhead *f, double tau)
 
 /* Conservative advancement on the lower bound: from tau, whose bound is y
  * above d, the gap cannot close faster than c0 + c1 tau', so nothing is
- * within d before the step that covers y at that rate. */
-double vrDistBound_Clear(const vrDistBound *db, double d, double until)
+ * within d before the step that covers y at that rate.  It starts at
+ * `from`, until which the caller knows the pair clear by other means (the
+ * schedule's speed bounds): the steps grow with the gap they see there, so
+ * the same 16 go further (starting at te and taking 8: 2.5 % more of
+ * peer-random-100's instructions, in evaluations the later keys save). */
+double vrDistBound_Clear(const vrDistBound *db, double d, double from, double until)
 {
-    double tau = 0, span = until - db->te, c0, c1, closing, accel;
+    double tau = from > db->te ? from - db->te : 0, span = until - db->te, c0, c1, closing, accel;
     vrAhead fa, fb;
     int it;
     if (!db->valid) return db->te;
@@ -201,7 +205,7 @@ double vrDistBound_Clear(const vrDistBound *db, double d, double until)
     ahead_of(&db->b, &fb);
     c0 = vr_max(0.0, -closing) + fa.steepest + fb.steepest;
     c1 = fabs(accel) + 2 * (fa.turn + fb.turn);
-    for (it = 0; it < 8; it++) {
+    for (it = 0; it < 16; it++) {
         double y = db->gap_n + closing * tau + 0.5 * accel * tau * tau - d
                  - ahead_rise(&fa, tau) - ahead_rise(&fb, tau);
         double b1 = c0 + c1 * tau, step;

@@ -69,8 +69,11 @@ void vrDistBound_Make(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrBody *
 /* lower bound only, along the unit direction n (a toward b) */
 void vrDistBound_MakeAlong(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrBody *B, const vrPose *pose_b,
                            double te, vec3 n, double lo, double hi);
-/* a time up to `until` (in the window) before which the lower bound stays above d */
-double vrDistBound_Clear(const vrDistBound *db, double d, double until);
+/* a time up to `until` (in the window) such that the lower bound stays
+ * above d from `from` (te when earlier) to it; `from` itself when the
+ * bound is not above d there.  The caller knows the pair clear before
+ * `from`. */
+double vrDistBound_Clear(const vrDistBound *db, double d, double from, double until);
 
 /* 1 when the distance at t (in the window) is certainly <= d, 0 when it is
  * certainly > d, -1 when the bounds come within tol of d (or are invalid). */

@@ -182,23 +182,26 @@ static double cap_time(const vrBody *b, double t)
 /* Turning bodies close together: the support of each along n followed
  * vertex by vertex (distbound.h), which sees how fast the near vertices
  * really come, not only that some point could come at |omega| R.  Looks
- * at most KEY_HORIZON ahead. */
+ * at most KEY_HORIZON ahead, from `known`, the key the speed bounds gave
+ * (it cannot come earlier). */
 #define KEY_HORIZON 1.0
-static double key_by_vertices(vrBody *a, vrBody *b, double t, vec3 n, double d)
+static double key_by_vertices(vrBody *a, vrBody *b, double t, vec3 n, double d, double known)
 {
     vrPose pa, pb;
     vrDistBound db;
     double until = vr_min(t + KEY_HORIZON, vr_min(cap_time(a, t), cap_time(b, t)));
+    if (known >= until) return known;   /* it could say no more */
     vrBody_ShapePose(a, t, &pa);
     vrBody_ShapePose(b, t, &pb);
     vrDistBound_MakeAlong(&db, a, &pa, b, &pb, t, n, t, until);
-    return vrDistBound_Clear(&db, d + KEY_MARGIN, until);
+    return vrDistBound_Clear(&db, d + KEY_MARGIN, known, until);
 }
 
 static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f, int turning)
 {
     vrClosing whole, rate;
     vec3 va, vb;
+    double known;
     whole.room = dist - d - KEY_MARGIN;
     whole.cmax = (moves(a) ? f->max_linear : 0) + (moves(b) ? f->max_linear : 0);
     if (whole.room <= 0) return t;
@@ -218,7 +221,8 @@ static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d,
     rate = whole;
     whole.room -= spin_margin(a) + spin_margin(b);
     rate.spin = spin_rate(a) + spin_rate(b);
-    return vr_max(t + vr_max(key_for(&whole, n, a, b), key_for(&rate, n, a, b)), key_by_vertices(a, b, t, n, d));
+    known = t + vr_max(key_for(&whole, n, a, b), key_for(&rate, n, a, b));
+    return vr_max(known, key_by_vertices(a, b, t, n, d, known));
 }
 
 double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)
