@@ -699,10 +699,65 @@ static int penetration_contact(const vrShape *a, const vrPose *pa, const vrShape
  * answer is used as it is (m). */
 #define TOUCH_TOL 1e-12
 
+/* An overlap no deeper than this is a touch (m).  libccd's MPR stops at
+ * that tolerance (penetration.c), and for shapes that only touch its
+ * direction is that of a portal vertex, not a normal: a cube set exactly on
+ * a floor got (0.35, 0.94, 0), and a board sliding on the floor with a
+ * corner down took contact impulses sideways from the floor, momentum from
+ * nowhere.  Nor does a walk that stopped on finding the overlap end on the
+ * touching features.  The face normal along which the shapes lie farthest
+ * apart (a separating-axis test over both shapes' faces) is the touching
+ * face's for a vertex, an edge or a face on a face, and the canonical
+ * features along it give normal, distance and region, as they do for
+ * shapes a hair apart.  Crossed edges touching (no face separates) stay
+ * libccd's. */
+#define SHALLOW_TOL 1e-9
+
+/* the shapes overlap deeper than SHALLOW_TOL, by libccd */
+static int deep_overlap(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb)
+{
+    double depth;
+    vec3 dir, pos;
+    return vrPenetration(a, pa, b, pb, &depth, &dir, &pos) == 0 && depth > SHALLOW_TOL;
+}
+
+/* the face normal (a's, or minus b's) along which a and b are farthest
+ * apart, and that gap; a's first face on a tie */
+static vec3 touching_axis(const Gap *g, double *gap)
+{
+    vec3 best = vec3_zero();
+    int side, f;
+    *gap = -HUGE_VAL;
+    for (side = 0; side < 2; side++) {
+        const Body *x = side ? g->b : g->a;
+        for (f = 0; f < x->p->nf; f++) {
+            vec3 u = vrPose_rotate(x->pose, x->p->face_normal[f]);
+            double h;
+            if (side) u = vec3_neg(u);
+            if ((h = gap_along(g, u)) > *gap) *gap = h, best = u;
+        }
+    }
+    return best;
+}
+
+/* Shapes that touch by the walk: the canonical features along the
+ * touching axis, when the shapes are no more than SHALLOW_TOL apart or
+ * into each other along it, by it and by libccd alike; else -1 */
+static int touching_features(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb, Gap *g,
+                             vrFeature fa, vrFeature fb, Canon *c)
+{
+    double gap;
+    vec3 axis = touching_axis(g, &gap);
+    if (!(fabs(gap) <= SHALLOW_TOL) || deep_overlap(a, pa, b, pb)) return -1;
+    if (canonical(g->a, g->b, axis, fa, fb, c) != 0 || !(fabs(c->dist) <= SHALLOW_TOL)) return -1;
+    return 0;
+}
+
 /* steps 2-5 after the walk (dw, ca, cb, pen: its result, the cache at
  * its end): the canonical features, distance and normal, and the region.
  * Shapes touching within TOUCH_TOL: the walk is made again from a fixed
- * start, so that what follows is a pure function of the poses. */
+ * start, so that what follows is a pure function of the poses.  Shapes
+ * that overlap go to libccd, unless they only touch (SHALLOW_TOL). */
 static int poly_finish(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb, double d,
                        vrWalkCache *cache, double dw, vec3 ca, vec3 cb, int pen, vrContact *out)
 {
@@ -716,19 +771,25 @@ static int poly_finish(const vrShape *a, const vrPose *pa, const vrShape *b, con
         cache = &fresh;
         dw = vrClosest_Walk(a->poly, pa, b->poly, pb, cache, &ca, &cb, NULL, &pen);
     }
-    if (pen || !(dw > 0)) return penetration_contact(a, pa, b, pb, d, ca, cb, out);
     ba.p = a->poly, ba.pose = pa, bb.p = b->poly, bb.pose = pb;
     canon_init(&c);
     g.a = &ba, g.b = &bb, g.va = vrFeature_Vertex(ba.p, cache->a), g.vb = vrFeature_Vertex(bb.p, cache->b);
-    rc = canonical(&ba, &bb, walk_direction(&g, cache->a, cache->b, ca, cb, dw), cache->a, cache->b, &c);
-    if (rc == 0 && !(c.dist > 0)) { /* the canonical features touch */
+    if (pen || !(dw > 0)) {
+        rc = touching_features(a, pa, b, pb, &g, cache->a, cache->b, &c);
+    } else {
+        rc = canonical(&ba, &bb, walk_direction(&g, cache->a, cache->b, ca, cb, dw), cache->a, cache->b, &c);
+        if (rc == 0 && !(c.dist > 0)) { /* the canonical features touch */
+            canon_free(&c);
+            canon_init(&c);
+            rc = touching_features(a, pa, b, pb, &g, cache->a, cache->b, &c);
+        }
+    }
+    if (rc != 0) {   /* an overlap (or out of memory: libccd then too) */
         canon_free(&c);
         return penetration_contact(a, pa, b, pb, d, ca, cb, out);
     }
-    if (rc == 0) {
-        set_result(out, c.dist, c.n, c.qa, c.qb);
-        if (d >= 0 && c.dist <= d) rc = region_poly(&ba, &bb, &c, d, out);
-    }
+    set_result(out, c.dist, c.n, c.qa, c.qb);
+    if (d >= 0 && c.dist <= d) rc = region_poly(&ba, &bb, &c, d, out);
     canon_free(&c);
     return rc;
 }

@@ -735,6 +735,53 @@ static int test_penetration_contact_is_libccd_depth_and_direction(void)
     return 0;
 }
 
+/* Shapes that touch exactly, which rounding leaves a hair apart or a hair
+ * inside each other (1e-16 m): a cube set on a table at any turn, the table
+ * at any pose, and a board lying on a floor with a corner down (a state of
+ * the board that a ball knocked, which took contact impulses sideways from
+ * the floor: momentum from nowhere).  The table's face normal, a distance
+ * of rounding, the whole region, the same from every start; libccd's
+ * direction at such a touch was a portal vertex's, (0.35, 0.94, 0) for a
+ * cube flat on the floor, with one region point. */
+static int test_shapes_that_touch_exactly_get_the_face_normal_and_region(void)
+{
+    Fix table, cube, board, floor;
+    int k, sideways = 0;
+    vrPose pf = identity_at(0, 0, -0.1), pb;
+    vrContact c;
+    vrWalkCache w;
+    ENSURE(box(&table, 1, 0.5, 0.025) == 0 && box(&cube, 0.25, 0.25, 0.25) == 0);
+    ENSURE(box(&board, 0.3, 0.3, 0.01) == 0 && box(&floor, 2, 2, 0.1) == 0);
+    for (k = 0; k < 400; k++) {
+        vrPose pt = k % 4 ? vrPose_make(rnd_unit(), rnd_rotation()) : identity_at(0, 0, 0);
+        vec3 up = vrPose_rotate(&pt, vec3_make(0, 0, 1));
+        quat turn = quat_mul(pt.q, quat_from_axis_angle(vec3_make(0, 0, 1), rnd(0, VR_PI)));
+        vrPose pc = vrPose_make(vec3_madd(vrPose_apply(&pt, vec3_make(rnd(-0.4, 0.4), rnd(-0.1, 0.1), 0.025)), 0.25, up), turn);
+        int table_is_b = k & 1;
+        w = start_cache(&table.s, &cube.s, 1);
+        if (table_is_b) {
+            vrFeature x = w.a;
+            w.a = w.b, w.b = x;
+        }
+        ENSURE(vrContact_Region(table_is_b ? &cube.s : &table.s, table_is_b ? &pc : &pt,
+                                table_is_b ? &table.s : &cube.s, table_is_b ? &pt : &pc, 0.01, &w, &c) == 0);
+        sideways += !(vec3_dist(c.n, table_is_b ? vec3_neg(up) : up) <= 1e-12);
+        ENSURE_MSG(fabs(c.dist) <= 1e-12, "case %d: dist %g", k, c.dist);
+        ENSURE_MSG(c.npoints == 4, "case %d: %d points", k, c.npoints);
+    }
+    printf("    400 cubes set on tables: %d normals not the table's\n", sideways);
+    ENSURE(sideways == 0);
+    pb = vrPose_make(vec3_make(-0.021400856115015795, 0.0081929718933958715, 0.014492126405564807),
+                     quat_make(0.99964549076658438, 0.0018501299909364842, 0.0055445433403368966, 0.025975524021634167));
+    if (region_from_every_start(&floor.s, &pf, &board.s, &pb, 0.01, &c)) return 1;
+    ENSURE(c.n.x == 0 && c.n.y == 0 && c.n.z == 1 && fabs(c.dist) <= 1e-15 && c.npoints == 4);
+    unfix(&table);
+    unfix(&cube);
+    unfix(&board);
+    unfix(&floor);
+    return 0;
+}
+
 /* ---- robustness ----------------------------------------------------------- */
 
 /* A 5 mm plate, a 2 m table under a 1 cm ball mesh, gaps of 1e-12 m: finite
@@ -803,5 +850,6 @@ int main(int argc, char **argv)
     RUN_TEST(test_penetration_direction_points_from_a_to_b);
     RUN_TEST(test_penetration_contact_is_libccd_depth_and_direction);
     RUN_TEST(test_contact_is_robust_on_thin_large_and_touching_shapes);
+    RUN_TEST(test_shapes_that_touch_exactly_get_the_face_normal_and_region);
     return test_summary();
 }
