@@ -1011,11 +1011,14 @@ static double sphere_gap(const vrOwner *o, const vrPair *p, double t, vec3 *dir)
 }
 
 /* A cheap look first: the bounding spheres about the centres are a lower
- * bound on the distance.  When they stay clear of the envelope past the
- * span's end, the full query could only find the pair outside with nothing
- * to do; the spheres' key (they do not change as the bodies turn) is as
- * valid as the full one.  A support pair always gets the full look (its
- * support may have to end). */
+ * bound on the distance.  When they are clear of the envelope, the full
+ * query could only find the pair outside with nothing to do, and the
+ * spheres' key (they do not change as the bodies turn) is as valid as the
+ * full one, if earlier: the pair is looked at again then, unless a change
+ * of either body comes first (in a room of a hundred, a body is hit every
+ * fifth of a second).  Taking it only when it passed the frame's end cost
+ * peer-random-100 4 % more instructions.  A support pair always gets the
+ * full look (its support may have to end). */
 static int clear_by_spheres(vrOwner *o, int pi, double t)
 {
     vrPair *p = &o->pair[pi];
@@ -1025,7 +1028,7 @@ static int clear_by_spheres(vrOwner *o, int pi, double t)
     gap = sphere_gap(o, p, t, &dir);
     if (gap <= o->p.d || vec3_len2(dir) == 0) return 0;
     key = vrSchedule_SphereKey(o->body[p->a], o->body[p->b], t, gap, dir, o->p.d, &o->p.flight);
-    if (key <= o->bp.T) return 0;
+    if (!(key > t)) return 0;
     p->t_check = t;
     settle(o, pi, 0, key);
     return 1;
