@@ -14,7 +14,9 @@ gravity or none; then steps it in blocks and, after every block, checks
   - with e = 1 everywhere and no force, energy is kept (speed clamps are
     lifted: max_linear and max_angular above anything reachable);
   - with no force and nothing static (an eighth of the seeds: no room),
-    linear momentum is kept to 1e-9, whatever the elasticities;
+    linear momentum is kept to 1e-9, whatever the elasticities, and so is
+    angular momentum about the origin when the bodies are boxes and
+    spheres (their inertia has a closed form here);
   - nothing tunnels: dumped every frame, no body leaves the room, and no
     centre crosses a thin plate's plane where the plate stands wider around
     it than the body reaches plus how far it moved in the frame;
@@ -52,7 +54,7 @@ def scene(seed, mode="heap = 1"):
         P("cube %s\n size = (%g,%g,%g)\n translate = (%g,%g,%g)\n mass = -1" % ((name,) + size + at))
         P(" elasticity = %g" % (1 if conservative else r.uniform(0.3, 1)))
     # static plates (thin) and blocks, some rotated, kept apart from one another
-    statics, plates, reach, mass = [], [], {}, {}
+    statics, plates, reach, mass, inertia = [], [], {}, {}, {}
     for i in range(0 if free else r.randint(0, 3)):
         for _ in range(100):
             c = (r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(0.3, 2.2))
@@ -99,30 +101,40 @@ def scene(seed, mode="heap = 1"):
         kind = r.choice(["cube", "superquadric", "sphere"])
         P("%s d%d" % (kind, i))
         if kind == "cube":
-            half = tuple(r.uniform(0.02, 0.12) for _ in range(3))
+            half = tuple(float("%g" % r.uniform(0.02, 0.12)) for _ in range(3))
             P(" size = (%g,%g,%g)" % half)
+            unit = tuple((sum(h * h for h in half) - half[k] ** 2) / 3 for k in range(3))
         elif kind == "superquadric":
             half = (r.uniform(.03, .12), r.uniform(.03, .12), r.uniform(.03, .12))
+            unit = None                    # no closed form here
             P(" a1 = %g\n a2 = %g\n a3 = %g\n exp1 = %g\n exp2 = %g" % (half + (r.uniform(.3, 1.8), r.uniform(.3, 1.8))))
         else:
-            half = (r.uniform(0.02, 0.12),) * 3
+            half = (float("%g" % r.uniform(0.02, 0.12)),) * 3
             P(" radius = %g" % half[0])
+            unit = (0.4 * half[0] ** 2,) * 3
         reach["d%d" % i] = math.sqrt(sum(h * h for h in half))   # beyond any point of it
         P(" translate = (%g,%g,%g)" % c)
         mass["d%d" % i] = r.choice([0.1, 0.5, 1, 3, 10])
+        inertia["d%d" % i] = unit and tuple(mass["d%d" % i] * u for u in unit)   # principal, body axes
         P(" mass = %g" % mass["d%d" % i])
         P(" elasticity = %g" % (1 if conservative else r.choice([0, 0.3, 0.8, 1, r.uniform(0, 1)])))
         if r.random() < 0.5:
             P(" rotate = (%g,%g,%g) %g" % (r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1) + 0.01, r.uniform(0, 3)))
         speed = r.choice([0, 1, 4, 12])
-        P(" linear_vel = (%g,%g,%g)" % tuple(r.uniform(-speed, speed) / 1.8 for _ in range(3)))
+        if free:   # toward the middle, so that they meet: momentum is checked through collisions
+            aim = (0, 0, 1.5)
+            P(" linear_vel = (%g,%g,%g)" % tuple((aim[k] - c[k]) * max(speed, 1) / 1.5 + r.uniform(-speed, speed) / 6
+                                                  for k in range(3)))
+        else:
+            P(" linear_vel = (%g,%g,%g)" % tuple(r.uniform(-speed, speed) / 1.8 for _ in range(3)))
         if r.random() < 0.6:
             P(" angular_vel = (%g,%g,%g)" % tuple(r.uniform(-8, 8) for _ in range(3)))
     P("start\nstats")
     blocks = r.randint(3, 8)
     for _ in range(blocks):
         P("step 1\ndump\n" * r.randint(5, 60) + "stats\nstart")
-    return "\n".join(out) + "\n", dict(conservative=conservative, free=free, plates=plates, reach=reach, mass=mass)
+    return "\n".join(out) + "\n", dict(conservative=conservative, free=free, plates=plates, reach=reach, mass=mass,
+                                       inertia=inertia)
 
 
 def rotation(axis, angle):
@@ -197,6 +209,51 @@ def momentum_drift(lines, mass):
     return worst, size
 
 
+def rotation_matrix(w, x, y, z):
+    return ((1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)),
+            (2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)),
+            (2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)))
+
+
+def angular_drift(lines, mass, inertia):
+    """the largest change of the total angular momentum about the origin
+    (m x cross v, plus R I R^T omega for each body) between two dumps, and
+    the sum of the terms' sizes it is measured against"""
+    first, worst, size = None, 0.0, 0.0
+    for fr in frames_of(lines, mass):
+        total, terms = [0.0, 0.0, 0.0], 0.0
+        for name, f in fr.items():
+            x, q, v, w = f[1:4], f[4:8], f[8:11], f[11:14]
+            m, R = mass[name], rotation_matrix(*q)
+            body = [sum(R[j][i] * w[j] for j in range(3)) * inertia[name][i] for i in range(3)]
+            spin = [sum(R[i][j] * body[j] for j in range(3)) for i in range(3)]
+            orbit = [m * (x[(i + 1) % 3] * v[(i + 2) % 3] - x[(i + 2) % 3] * v[(i + 1) % 3]) for i in range(3)]
+            for i in range(3):
+                total[i] += orbit[i] + spin[i]
+            terms += math.hypot(*orbit) + math.hypot(*spin)
+        size = max(size, terms)
+        if first is None:
+            first = total
+        worst = max(worst, math.dist(total, first))
+    return worst, size
+
+
+def frames_of(lines, mass):
+    """each dump as {name: its numbers (t, x, q, v, omega)}"""
+    frames, cur = [], {}
+    for line in lines:
+        f = line.split(",")
+        if f[0].startswith("#"):
+            if cur:
+                frames.append(cur)
+            cur = {}
+        elif f[0] in mass:
+            cur[f[0]] = [float(v) for v in f[1:15]]
+    if cur:
+        frames.append(cur)
+    return frames
+
+
 def check(vroc, seed):
     text, info = scene(seed)
     conservative, plates, reach = info["conservative"], info["plates"], info["reach"]
@@ -214,6 +271,10 @@ def check(vroc, seed):
         drift, size = momentum_drift(dumps(p), info["mass"])
         if drift > 1e-9 * size + 1e-12:
             return "momentum drifted by %.3g (of %.3g)" % (drift, size), path
+        if all(info["inertia"].values()):   # boxes and spheres only
+            drift, size = angular_drift(dumps(p), info["mass"], info["inertia"])
+            if drift > 1e-9 * size + 1e-12:
+                return "angular momentum drifted by %.3g (of %.3g)" % (drift, size), path
     energies = []
     for line in p.stdout.splitlines():
         if line.startswith("frames="):
