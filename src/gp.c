@@ -1556,47 +1556,66 @@ static int solve_small(double A[3][4], int k)
  * corners that span it make every region point's normal velocity zero, so
  * a box that comes down flat keeps no rocking spin below v_eps that would
  * tip it onto an edge later (and a sphere, one point below its centre,
- * loses only its normal velocity).  The partner takes no impulse, as for
- * the normal velocity before: a support is static, resting or supported. */
-static void settle_on_support(vrOwner *o, const vrEvent *ev, vrBodyState *st)
+ * loses only its normal velocity).  A static or resting partner takes no
+ * impulse; a moving one (supported, sliding) takes the opposite ones, or
+ * the settle would make momentum from nothing (a ball settling on a board
+ * that slides under it). */
+static void settle_on_support(vrOwner *o, const vrEvent *ev, vrBodyState *st, vrBodyState *sy)
 {
     vrBody *x = o->body[ev->body], *y = o->body[ev->partner];
     int k = ev->ncorner, i, j;
     vrPose px, py;
-    vec3 r[3], w;
-    mat33 Iinv;
+    vec3 r[3], q[3], w, wy = vec3_zero();
+    mat33 Iinv, Iinv_y = mat33_zero();
     double A[3][4];
     vrBody_Pose(x, ev->t, &px);
     vrBody_Pose(y, ev->t, &py);
     Iinv = vrBody_InvInertiaWorld(x, &px);
     w = mat33_mulv(&Iinv, st->L);
+    if (sy) {
+        Iinv_y = vrBody_InvInertiaWorld(y, &py);
+        wy = mat33_mulv(&Iinv_y, sy->L);
+    }
     for (i = 0; i < k; i++) {
         vec3 u = vec3_add(st->v, vec3_cross(w, r[i] = vec3_sub(ev->corner[i], px.p)));
-        A[i][3] = -vec3_dot(ev->n, vec3_sub(u, vrBody_PointVelocity(y, ev->t, &py, ev->corner[i])));
+        vec3 uy = sy ? vec3_add(sy->v, vec3_cross(wy, q[i] = vec3_sub(ev->corner[i], py.p)))
+                     : vrBody_PointVelocity(y, ev->t, &py, ev->corner[i]);
+        A[i][3] = -vec3_dot(ev->n, vec3_sub(u, uy));
     }
     for (i = 0; i < k; i++)
-        for (j = 0; j < k; j++)
+        for (j = 0; j < k; j++) {
             A[i][j] = x->inv_mass + vec3_dot(ev->n, vec3_cross(mat33_mulv(&Iinv, vec3_cross(r[j], ev->n)), r[i]));
+            if (sy)
+                A[i][j] += y->inv_mass + vec3_dot(ev->n, vec3_cross(mat33_mulv(&Iinv_y, vec3_cross(q[j], ev->n)), q[i]));
+        }
     if (solve_small(A, k) != 0) return;
     for (i = 0; i < k; i++) {
         vec3 J = vec3_scale(ev->n, A[i][3]);
         st->v = vec3_madd(st->v, x->inv_mass, J);
         st->L = vec3_add(st->L, vec3_cross(r[i], J));
+        if (sy) {
+            sy->v = vec3_madd(sy->v, -y->inv_mass, J);
+            sy->L = vec3_sub(sy->L, vec3_cross(q[i], J));
+        }
     }
 }
 
 static int respond_support(vrOwner *o, const vrEvent *ev, vrUpdate *up)
 {
-    vrBody *x = o->body[ev->body];
-    vrBodyState *st = vrUpdate_Body(up, x, ev->t);
-    int i, k = 0;
-    if (!st) return -1;
+    vrBody *x = o->body[ev->body], *y = o->body[ev->partner];
+    int moving = ev->kind == VR_EV_SUPPORT_BEGIN && !frozen(y), i, k = 0;
+    vrBodyState *st, *sy = NULL;
+    /* the partner first: fetching it again below then adds nothing, and
+     * st stays where it is */
+    if (moving && !vrUpdate_Body(up, y, ev->t)) return -1;
+    if (!(st = vrUpdate_Body(up, x, ev->t))) return -1;
+    if (moving) sy = vrUpdate_Body(up, y, ev->t);
     if (ev->kind == VR_EV_SUPPORT_BEGIN) {
-        settle_on_support(o, ev, st);
+        settle_on_support(o, ev, st, sy);
         st->support[st->nsupport].partner = ev->partner;
         st->support[st->nsupport].n = ev->n;
         st->support[st->nsupport].joint = 0;
-        st->support[st->nsupport].fixed = o->body[ev->partner]->is_static;
+        st->support[st->nsupport].fixed = y->is_static;
         st->nsupport++;
         return 0;
     }

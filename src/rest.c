@@ -163,16 +163,40 @@ static int carried(vrWorld *w, const vrCandidate *c, int k, vec3 g, double T)
     return inside;
 }
 
+/* What is left of the normal relative velocity goes, as when support
+ * begins on one contact: from b alone when the partner is static or
+ * resting, else shared by inverse mass, the partner taking the opposite
+ * change, so that momentum is kept (a box leaning on a 10 kg box that
+ * slid past it took the other's speed along the normal, 1 kg m/s from
+ * nowhere). */
+static int settle_joint(vrWorld *w, vrUpdate *up, vrBody *b, double T, const vrCandidate *c)
+{
+    vrBody *y = &w->obj[c->partner]->body;
+    vrBodyState *st, *sy = NULL;
+    double share = 1, along;
+    if (!y->is_static && !y->resting) {
+        if (!vrUpdate_Body(up, y, T)) return -1;   /* first: fetching it again adds nothing */
+        share = b->inv_mass / (b->inv_mass + y->inv_mass);
+    }
+    if (!(st = vrUpdate_Body(up, b, T))) return -1;
+    if (share < 1) sy = vrUpdate_Body(up, y, T);
+    along = vec3_dot(c->n, vec3_sub(st->v, c->partner_velocity));
+    st->v = vec3_madd(st->v, -share * along, c->n);
+    if (sy) sy->v = vec3_madd(sy->v, b->mass * share * along * y->inv_mass, c->n);
+    return 0;
+}
+
 /* support begins on every one of the contacts, as for one (SPEC 3.1): the
  * force's normal components go, and what is left of the normal relative
  * velocity */
-static int support_all(const vrWorld *w, vrUpdate *up, vrBody *b, double T, const vrCandidate *c, int k)
+static int support_all(vrWorld *w, vrUpdate *up, vrBody *b, double T, const vrCandidate *c, int k)
 {
-    vrBodyState *st = vrUpdate_Body(up, b, T);
+    vrBodyState *st;
     int i;
-    if (!st) return -1;
+    for (i = 0; i < k && i < VR_MAX_SUPPORTS; i++)
+        if (settle_joint(w, up, b, T, &c[i]) != 0) return -1;
+    if (!(st = vrUpdate_Body(up, b, T))) return -1;
     for (i = 0; i < k && st->nsupport < VR_MAX_SUPPORTS; i++) {
-        st->v = vec3_madd(st->v, -vec3_dot(c[i].n, vec3_sub(st->v, c[i].partner_velocity)), c[i].n);
         st->support[st->nsupport].partner = c[i].partner;
         st->support[st->nsupport].n = c[i].n;
         st->support[st->nsupport].joint = 1;

@@ -369,6 +369,49 @@ static int test_a_push_out_does_not_drive_a_body_into_its_static_support(void)
     return 0;
 }
 
+/* Support begins on a body that slides (SPEC 3.1: what is left of the
+ * normal relative velocity goes): a box coming to lie on a sliding board
+ * at a slant takes an impulse along the slanted normal, and the board the
+ * opposite one, so momentum is kept; before, the board took none and the
+ * box's share of it came from nowhere.  A static or resting partner still
+ * takes nothing. */
+static int test_support_on_a_sliding_body_keeps_momentum(void)
+{
+    vrBody board, box;
+    vrFlight f;
+    vrOwner *o;
+    vrEvent ev;
+    vrUpdate up;
+    vec3 before, after = vec3_zero(), n = vec3_normalize(vec3_make(0.3, -0.1, 1));
+    int i;
+    f.accel = vec3_make(0, 0, -9.8), f.max_linear = 50, f.max_angular = 50;
+    make_body(&board, 0, 0, 0);
+    make_body(&box, 1, 0, 0);
+    vrBody_SetMassProperties(&board, 3, &cube_poly->inertia_unit, cube_poly->r_in, cube_poly->r_out);
+    board.nsupport = 1;                         /* on the (static) floor, id 7 */
+    board.support[0].partner = 7, board.support[0].n = vec3_make(0, 0, 1), board.support[0].fixed = 1;
+    vrBody_Anchor(&board, 0, vec3_zero(), vec3_make(1, 0.5, 0), quat_identity(), vec3_zero(), &f);
+    vrBody_Anchor(&box, 0, vec3_make(0.1, 0, 0.41), vec3_make(1.2, 0.4, -0.003), quat_identity(),
+                  vec3_make(0, 0.001, 0), &f);
+    before = vec3_add(vec3_scale(vec3_make(1, 0.5, 0), 3), vec3_make(1.2, 0.4, -0.003));
+    memset(&ev, 0, sizeof ev);
+    ev.kind = VR_EV_SUPPORT_BEGIN, ev.t = 0, ev.a = 0, ev.b = 1, ev.body = 1, ev.partner = 0, ev.n = n;
+    ev.ncorner = 3;
+    ev.corner[0] = vec3_make(-0.1, -0.2, 0.2), ev.corner[1] = vec3_make(0.3, -0.2, 0.2);
+    ev.corner[2] = vec3_make(0.3, 0.2, 0.2);
+    ENSURE((o = owner_of(&board, &box, &f)) != NULL);
+    vrUpdate_Init(&up);
+    ENSURE(vrOwner_Respond(o, &ev, &up) == 0);
+    for (i = 0; i < up.n; i++) after = vec3_madd(after, up.body[i].id ? 1.0 : 3.0, up.body[i].v);
+    printf("    %d bodies updated; momentum (%.9f %.9f) -> (%.9f %.9f) along the floor\n", up.n, before.x, before.y,
+           after.x, after.y);
+    ENSURE(up.n == 2);
+    ENSURE(fabs(after.x - before.x) < 1e-12 && fabs(after.y - before.y) < 1e-12);
+    vrUpdate_Free(&up);
+    vrOwner_Free(o);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     test_init(argc, argv);
@@ -379,5 +422,6 @@ int main(int argc, char **argv)
     RUN_TEST(test_a_push_out_in_a_later_frame_is_no_hit);
     RUN_TEST(test_the_start_check_looks_at_the_bodies_it_is_given);
     RUN_TEST(test_a_push_out_does_not_drive_a_body_into_its_static_support);
+    RUN_TEST(test_support_on_a_sliding_body_keeps_momentum);
     return test_summary();
 }
