@@ -385,6 +385,7 @@ static int test_support_on_a_sliding_body_keeps_momentum(void)
     vec3 before, after = vec3_zero(), n = vec3_normalize(vec3_make(0.3, -0.1, 1));
     int i;
     f.accel = vec3_make(0, 0, -9.8), f.max_linear = 50, f.max_angular = 50;
+    ENSURE(vrPolyhedron_Cube(vec3_make(0.2, 0.2, 0.2), &cube_poly, NULL, 0) == 0);
     make_body(&board, 0, 0, 0);
     make_body(&box, 1, 0, 0);
     vrBody_SetMassProperties(&board, 3, &cube_poly->inertia_unit, cube_poly->r_in, cube_poly->r_out);
@@ -409,6 +410,7 @@ static int test_support_on_a_sliding_body_keeps_momentum(void)
     ENSURE(fabs(after.x - before.x) < 1e-12 && fabs(after.y - before.y) < 1e-12);
     vrUpdate_Free(&up);
     vrOwner_Free(o);
+    vrPolyhedron_Free(cube_poly);
     return 0;
 }
 
