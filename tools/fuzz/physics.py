@@ -185,59 +185,6 @@ def dumps(p):
     return [line for line in p.stdout.splitlines() if not line.startswith("frames=")]
 
 
-def momentum_drift(lines, mass):
-    """the largest change of the total linear momentum between two dumps,
-    and the sum of the bodies' momenta it is measured against"""
-    first, worst, size = None, 0.0, 0.0
-    frames, cur = [], {}
-    for line in lines:
-        f = line.split(",")
-        if f[0].startswith("#"):
-            if cur:
-                frames.append(cur)
-            cur = {}
-        elif f[0] in mass:
-            cur[f[0]] = tuple(mass[f[0]] * float(v) for v in f[9:12])
-    if cur:
-        frames.append(cur)
-    for fr in frames:
-        total = tuple(sum(v[k] for v in fr.values()) for k in range(3))
-        size = max(size, sum(math.sqrt(sum(c * c for c in v)) for v in fr.values()))
-        if first is None:
-            first = total
-        worst = max(worst, math.dist(total, first))
-    return worst, size
-
-
-def rotation_matrix(w, x, y, z):
-    return ((1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)),
-            (2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)),
-            (2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)))
-
-
-def angular_drift(lines, mass, inertia):
-    """the largest change of the total angular momentum about the origin
-    (m x cross v, plus R I R^T omega for each body) between two dumps, and
-    the sum of the terms' sizes it is measured against"""
-    first, worst, size = None, 0.0, 0.0
-    for fr in frames_of(lines, mass):
-        total, terms = [0.0, 0.0, 0.0], 0.0
-        for name, f in fr.items():
-            x, q, v, w = f[1:4], f[4:8], f[8:11], f[11:14]
-            m, R = mass[name], rotation_matrix(*q)
-            body = [sum(R[j][i] * w[j] for j in range(3)) * inertia[name][i] for i in range(3)]
-            spin = [sum(R[i][j] * body[j] for j in range(3)) for i in range(3)]
-            orbit = [m * (x[(i + 1) % 3] * v[(i + 2) % 3] - x[(i + 2) % 3] * v[(i + 1) % 3]) for i in range(3)]
-            for i in range(3):
-                total[i] += orbit[i] + spin[i]
-            terms += math.hypot(*orbit) + math.hypot(*spin)
-        size = max(size, terms)
-        if first is None:
-            first = total
-        worst = max(worst, math.dist(total, first))
-    return worst, size
-
-
 def frames_of(lines, mass):
     """each dump as {name: its numbers (t, x, q, v, omega)}"""
     frames, cur = [], {}
@@ -252,6 +199,52 @@ def frames_of(lines, mass):
     if cur:
         frames.append(cur)
     return frames
+
+
+def largest_change(sums):
+    """from (total vector, size) per dump: the largest distance of a total
+    from the first one, and the largest size it is measured against"""
+    first, worst, size = None, 0.0, 0.0
+    for total, terms in sums:
+        size = max(size, terms)
+        if first is None:
+            first = total
+        worst = max(worst, math.dist(total, first))
+    return worst, size
+
+
+def momentum_drift(lines, mass):
+    """the largest change of the total linear momentum between two dumps,
+    and the sum of the bodies' momenta it is measured against"""
+    def sums(fr):
+        p = {name: [mass[name] * v for v in f[8:11]] for name, f in fr.items()}
+        return [sum(v[k] for v in p.values()) for k in range(3)], sum(math.hypot(*v) for v in p.values())
+    return largest_change(sums(fr) for fr in frames_of(lines, mass))
+
+
+def rotation_matrix(w, x, y, z):
+    return ((1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)),
+            (2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)),
+            (2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)))
+
+
+def angular_drift(lines, mass, inertia):
+    """the largest change of the total angular momentum about the origin
+    (m x cross v, plus R I R^T omega for each body) between two dumps, and
+    the sum of the terms' sizes it is measured against"""
+    def sums(fr):
+        total, terms = [0.0, 0.0, 0.0], 0.0
+        for name, f in fr.items():
+            x, q, v, w = f[1:4], f[4:8], f[8:11], f[11:14]
+            m, R = mass[name], rotation_matrix(*q)
+            body = [sum(R[j][i] * w[j] for j in range(3)) * inertia[name][i] for i in range(3)]
+            spin = [sum(R[i][j] * body[j] for j in range(3)) for i in range(3)]
+            orbit = [m * (x[(i + 1) % 3] * v[(i + 2) % 3] - x[(i + 2) % 3] * v[(i + 1) % 3]) for i in range(3)]
+            for i in range(3):
+                total[i] += orbit[i] + spin[i]
+            terms += math.hypot(*orbit) + math.hypot(*spin)
+        return total, terms
+    return largest_change(sums(fr) for fr in frames_of(lines, mass))
 
 
 def check(vroc, seed):
