@@ -172,14 +172,12 @@ static int carried(vrWorld *w, const vrCandidate *c, int k, vec3 g, double T)
 static int settle_joint(vrWorld *w, vrUpdate *up, vrBody *b, double T, const vrCandidate *c)
 {
     vrBody *y = &w->obj[c->partner]->body;
+    int moving = !y->is_static && !y->resting;
     vrBodyState *st, *sy = NULL;
-    double share = 1, along;
-    if (!y->is_static && !y->resting) {
-        if (!vrUpdate_Body(up, y, T)) return -1;   /* first: fetching it again adds nothing */
-        share = b->inv_mass / (b->inv_mass + y->inv_mass);
-    }
+    double share = moving ? b->inv_mass / (b->inv_mass + y->inv_mass) : 1, along;
+    if (moving && !vrUpdate_Body(up, y, T)) return -1;   /* first: fetching it again adds nothing */
     if (!(st = vrUpdate_Body(up, b, T))) return -1;
-    if (share < 1) sy = vrUpdate_Body(up, y, T);
+    if (moving) sy = vrUpdate_Body(up, y, T);
     along = vec3_dot(c->n, vec3_sub(st->v, c->partner_velocity));
     st->v = vec3_madd(st->v, -share * along, c->n);
     if (sy) sy->v = vec3_madd(sy->v, b->mass * share * along * y->inv_mass, c->n);
@@ -193,10 +191,11 @@ static int support_all(vrWorld *w, vrUpdate *up, vrBody *b, double T, const vrCa
 {
     vrBodyState *st;
     int i;
-    for (i = 0; i < k && i < VR_MAX_SUPPORTS; i++)
-        if (settle_joint(w, up, b, T, &c[i]) != 0) return -1;
-    if (!(st = vrUpdate_Body(up, b, T))) return -1;
-    for (i = 0; i < k && st->nsupport < VR_MAX_SUPPORTS; i++) {
+    for (i = 0; i < k; i++) {
+        if (!(st = vrUpdate_Body(up, b, T))) return -1;
+        if (st->nsupport == VR_MAX_SUPPORTS) break;
+        /* b's state again: settling may have added the partner's and moved it */
+        if (settle_joint(w, up, b, T, &c[i]) != 0 || !(st = vrUpdate_Body(up, b, T))) return -1;
         st->support[st->nsupport].partner = c[i].partner;
         st->support[st->nsupport].n = c[i].n;
         st->support[st->nsupport].joint = 1;
