@@ -80,6 +80,7 @@ typedef struct vrBody {
     double pose_t;
     vrPose pose;
     int pose_valid;
+    int still;                      /* no velocity, acceleration or spin: one pose for every t */
 } vrBody;
 
 /* settings that shape free flight */

@@ -14,6 +14,15 @@ static int constant_spin(const vrBody *b, vec3 *w)
     return 1;
 }
 
+/* A box's highest vertex along body direction ob: each term of the dot
+ * product at its largest, and since rounding is monotone the sum of the
+ * largest terms is the largest sum: the same bits as the loop over its
+ * eight vertices (+-half, never recentred). */
+static double box_top(vec3 half, vec3 ob)
+{
+    return fabs(ob.x) * half.x + fabs(ob.y) * half.y + fabs(ob.z) * half.z;
+}
+
 /* How far the side reaches along out at te (its support), and when it
  * turns, the vertices that could be the highest within |tau| <= span: one
  * below the top by more than 2 |omega| R span cannot overtake the top,
@@ -22,20 +31,23 @@ static double reach(vrBoundSide *s, const vrBody *b, const vrPose *pose, vec3 ou
 {
     const vrPolyhedron *poly = b->shape.poly;
     vec3 ob, rate;
-    double top, slack = 2.0 * s->w_len * s->r_out * span + 1e-12, h[VR_DISTBOUND_VERTS];
-    int i, keep = poly && poly->nv <= VR_DISTBOUND_VERTS;
+    double top, slack = 2.0 * s->w_len * s->r_out * span + 1e-12;
+    int i;
     if (b->shape.kind == VR_SHAPE_SPHERE) return vec3_dot(out, pose->p) + b->shape.radius;
     ob = mat33_tmulv(&pose->R, out);   /* in the body frame: one rotation, not one per vertex */
-    top = -INFINITY;
-    for (i = 0; i < poly->nv; i++) {
-        double x = vec3_dot(ob, poly->vert[i]);
-        if (keep) h[i] = x;
-        if (x > top) top = x;
+    if (b->shape.kind == VR_SHAPE_BOX) {
+        top = box_top(b->shape.half, ob);
+    } else {
+        top = -INFINITY;
+        for (i = 0; i < poly->nv; i++) {
+            double x = vec3_dot(ob, poly->vert[i]);
+            if (x > top) top = x;
+        }
     }
     if (s->w_len == 0) return vec3_dot(out, pose->p) + top;
     rate = vec3_cross(ob, mat33_tmulv(&pose->R, w));
     for (i = 0; i < poly->nv && s->nv >= 0; i++) {
-        double g = (keep ? h[i] : vec3_dot(ob, poly->vert[i])) - top;
+        double g = vec3_dot(ob, poly->vert[i]) - top;
         if (g < -slack) continue;
         if (s->nv == VR_DISTBOUND_VERTS) {
             s->nv = -1;

@@ -252,7 +252,7 @@ static quat orientation_at(vrBody *b, double tau)
 void vrBody_Pose(vrBody *b, double t, vrPose *pose)
 {
     vec3 x;
-    if (b->pose_valid && b->pose_t == t) {
+    if (b->pose_valid && (b->pose_t == t || b->still)) {
         *pose = b->pose;
         return;
     }
@@ -306,6 +306,23 @@ static void reset_rotation_cache(vrBody *b)
     rc->last = a;
 }
 
+/* A static or resting body, or one merely hanging still: its pose is x0,
+ * q0 at any t, so the pose asked for once serves every later time (a wall
+ * is in every bisection of a floor bounce: a rotation matrix each).  Only
+ * +0 velocity and acceleration, and an x0 without -0, give the same bits
+ * at every t (x0 + v0 tau is then x0 whatever the sign of tau). */
+static int plus_zero(vec3 v) { return v.x == 0 && v.y == 0 && v.z == 0 && !signbit(v.x) && !signbit(v.y) && !signbit(v.z); }
+static int no_minus_zero(vec3 v)
+{
+    return !(v.x == 0 && signbit(v.x)) && !(v.y == 0 && signbit(v.y)) && !(v.z == 0 && signbit(v.z));
+}
+
+static void note_stillness(vrBody *b)
+{
+    const vrMotion *m = &b->m;
+    b->still = b->rot == VR_ROT_NONE && plus_zero(m->v0) && plus_zero(m->a) && no_minus_zero(m->x0);
+}
+
 void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vrFlight *f)
 {
     vrMotion *m = &b->m;
@@ -330,6 +347,7 @@ void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vr
     m->tcap = cap_time(m->v0, m->a, f->max_linear);
     classify_rotation(b);
     reset_rotation_cache(b);
+    note_stillness(b);
     b->pose_valid = 0;
 }
 
@@ -345,6 +363,7 @@ void vrBody_Restore(vrBody *b, double t0, vec3 x0, vec3 v0, quat q0, vec3 L, con
     m->tcap = cap_time(m->v0, m->a, f->max_linear);
     classify_rotation(b);
     reset_rotation_cache(b);
+    note_stillness(b);
     b->pose_valid = 0;
 }
 
