@@ -170,6 +170,47 @@ static int test_pose_is_pure_function_of_time(void)
     return 0;
 }
 
+/* A body hanging still (no velocity, force or spin) serves one pose for
+ * every time; it must be the pose a fresh copy computes at that time, bit
+ * for bit, signed zeros included, and a body anchored anew must not be
+ * served the old pose. */
+static int test_a_still_body_has_one_pose_for_every_time(void)
+{
+    vrFlight none = flight(vec3_zero(), 8, 100), g = flight(vec3_make(0, 0, -9.8), 8, 100);
+    struct { vec3 x, v; const vrFlight *f; } c[] = {
+        {{1, -2, 3}, {0, 0, 0}, &none},     /* still */
+        {{-0.0, 1, 0}, {0, 0, 0}, &none},   /* x0 + (-0) keeps -0, x0 + (+0) does not */
+        {{0, 1, 2}, {-0.0, 0, 0}, &none},   /* v0 = -0: +0 at tau < 0, -0 after */
+        {{0, 1, 2}, {0, 0, 0}, &g},         /* falls */
+    };
+    double ts[] = {4.0, -3.0, 7.5, 0.25, -0.5, 4.0};
+    int k, i;
+    for (k = 0; k < 4; k++) {
+        vrBody a, fresh0;
+        box_body(&a, 1, 0.1, 0.2, 0.35);
+        vrBody_Anchor(&a, 1.0, c[k].x, c[k].v, quat_identity(), vec3_zero(), c[k].f);
+        fresh0 = a;
+        for (i = 0; i < 6; i++) {
+            vrPose pa, pb;
+            vrBody fresh = fresh0;
+            vrBody_Pose(&a, ts[i], &pa);
+            vrBody_Pose(&fresh, ts[i], &pb);
+            ENSURE_MSG(memcmp(&pa.p, &pb.p, sizeof pa.p) == 0 && memcmp(&pa.q, &pb.q, sizeof pa.q) == 0,
+                       "case %d at t = %g", k, ts[i]);
+        }
+        ENSURE(a.still == (k == 0));
+        /* anchored anew with a speed: a new pose at a new time */
+        {
+            vrPose p0, p1;
+            vrBody_Pose(&a, 2.0, &p0);
+            vrBody_Anchor(&a, 2.0, p0.p, vec3_make(1, 0, 0), p0.q, vec3_zero(), &none);
+            vrBody_Pose(&a, 3.0, &p1);
+            ENSURE(p1.p.x == p0.p.x + 1.0);
+        }
+    }
+    return 0;
+}
+
 /* an isotropic body spins at constant omega about L: exact */
 static int test_isotropic_spin_is_exact(void)
 {
@@ -229,6 +270,7 @@ int main(int argc, char **argv)
     RUN_TEST(test_middle_axis_spin_flips);
     RUN_TEST(test_symmetric_top_matches_integrator);
     RUN_TEST(test_pose_is_pure_function_of_time);
+    RUN_TEST(test_a_still_body_has_one_pose_for_every_time);
     RUN_TEST(test_isotropic_spin_is_exact);
     RUN_TEST(test_path_box_is_the_paths_extent);
     return test_summary();
