@@ -230,7 +230,38 @@ double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, doubl
     return key(a, b, t, dist, n, d, f, 1);
 }
 
+/* Two bodies flying free under the same force move in straight lines
+ * relative to each other until either reaches the speed cap, so their
+ * centres come within D of each other exactly at the first root of
+ * |dx + dv tau|^2 = D^2; the bounds above only see the closing speed
+ * along the line between them now, and a pair flying past each other was
+ * looked at again and again (in peer-random-100, 54 k of 205 k looks).
+ * D keeps the KEY_MARGIN (rounding of a minute-long run's positions is
+ * below 1e-13 m): a path that enters the envelope goes 1e-9 m deep into
+ * D's sphere, far above the root's rounding unless the centres are
+ * kilometres apart.  No root before t1: no contact before t1. */
+static double linear_key(const vrBody *a, const vrBody *b, double t, double room)
+{
+    vec3 xa, xb, va, vb, dx, dv;
+    double len, D, tau, t1;
+    if (!moves(a) || !moves(b) || a->m.a.x != b->m.a.x || a->m.a.y != b->m.a.y || a->m.a.z != b->m.a.z) return t;
+    vrBody_Position(a, t, &xa);
+    vrBody_Position(b, t, &xb);
+    vrBody_Velocity(a, t, &va);
+    vrBody_Velocity(b, t, &vb);
+    dx = vec3_sub(xb, xa);
+    dv = vec3_sub(vb, va);
+    len = vec3_len(dx);
+    D = len - room;
+    if (!(D > 0)) return t;
+    tau = first_root(vec3_dot(dv, dv), 2 * vec3_dot(dx, dv), room * (len + D));
+    t1 = vr_min(cap_left(a, t), cap_left(b, t));
+    return t + vr_min(tau, t1);
+}
+
 double vrSchedule_SphereKey(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)
 {
-    return key(a, b, t, dist, n, d, f, 0);
+    double bound = key(a, b, t, dist, n, d, f, 0), room = dist - d - KEY_MARGIN;
+    if (!(room > 0)) return bound;
+    return vr_max(bound, linear_key(a, b, t, room));
 }
