@@ -311,7 +311,10 @@ static void reset_rotation_cache(vrBody *b)
  * is in every bisection of a floor bounce: a rotation matrix each).  Only
  * +0 velocity and acceleration, and an x0 without -0, give the same bits
  * at every t (x0 + v0 tau is then x0 whatever the sign of tau). */
-static int plus_zero(vec3 v) { return v.x == 0 && v.y == 0 && v.z == 0 && !signbit(v.x) && !signbit(v.y) && !signbit(v.z); }
+static int plus_zero(vec3 v)
+{
+    return v.x == 0 && v.y == 0 && v.z == 0 && !signbit(v.x) && !signbit(v.y) && !signbit(v.z);
+}
 static int no_minus_zero(vec3 v)
 {
     return !(v.x == 0 && signbit(v.x)) && !(v.y == 0 && signbit(v.y)) && !(v.z == 0 && signbit(v.z));
