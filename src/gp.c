@@ -710,6 +710,15 @@ static int within(vrOwner *o, vrPair *p, double t, double level, double lo, doub
     return in;
 }
 
+/* the time of the first event found so far at this grid point */
+static double earliest_found(const vrOwner *o)
+{
+    double t = INFINITY;
+    int i;
+    for (i = 0; i < o->nfound; i++) t = vr_min(t, o->found[i].t);
+    return t;
+}
+
 /* what the bounds from the bracket's two ends say about the distance at t */
 static int decided(const vrDistBound near[2], double t, double level)
 {
@@ -723,8 +732,14 @@ static int decided(const vrDistBound near[2], double t, double level)
  * the event at the upper end of the final bracket (SPEC 3.2).  at_hi is the
  * query at hi.  A halving whose answer the bounds from a measurement at
  * either end of the bracket prove (distbound.h) is not asked of the
- * geometry: the same answers, so the same bracket, from a few walks. */
-static double bisect(vrOwner *o, vrPair *p, double lo, double hi, const vrContact *at_hi, double level)
+ * geometry: the same answers, so the same bracket, from a few walks.
+ * NAN once the bracket is past `wanted` (an event found at this grid point
+ * comes first): the event would be dropped, and this grid point's looks
+ * rolled back, after the first is answered; the halvings left, where most
+ * of the geometry is asked, would be for nothing (in a heap of 1,000
+ * bodies, more than half of all bisections). */
+static double bisect(vrOwner *o, vrPair *p, double lo, double hi, const vrContact *at_hi, double level,
+                     double wanted)
 {
     const double lo0 = lo, hi0 = hi;
     vrDistBound near[2];      /* from the measurements at lo and at hi */
@@ -753,6 +768,7 @@ static double bisect(vrOwner *o, vrPair *p, double lo, double hi, const vrContac
         }
         if (in) hi = mid;
         else lo = mid, lo_tested = 1;
+        if (lo >= wanted) return NAN;
     }
     return hi;
 }
@@ -1171,15 +1187,21 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
         settle(o, pi, 0, pair_key(o, p, t, c.dist, c.n));
         return was_inside || t == t_prev ? lost_support(o, ev, t, p, &c) : 0;
     }
-    if (!p->inside && t > t_prev && impact(o, ev, p, bisect(o, p, t_prev, t, &c, o->p.d))) {
-        settle(o, pi, p->inside, t);  /* due again at once: it is rolled back or re-evaluated */
-        return 1;
+    if (!p->inside && t > t_prev) {
+        double at = bisect(o, p, t_prev, t, &c, o->p.d, earliest_found(o));
+        if (isnan(at) || impact(o, ev, p, at)) {
+            settle(o, pi, p->inside, t);  /* due again at once: it is rolled back or re-evaluated */
+            return !isnan(at);
+        }
     }
     was_inside = p->inside;
     settle(o, pi, 1, t);
     for_events(o, p, t, &pa, &pb, &c);   /* the query above had the region: event_query's */
-    if (was_inside && t > t_prev && c.dist < -VR_PENETRATION_TOL && touch(o, ev, p, bisect(o, p, t_prev, t, &c, 0)))
-        return 1;                         /* due again at once, as after an impact */
+    if (was_inside && t > t_prev && c.dist < -VR_PENETRATION_TOL) {
+        double at = bisect(o, p, t_prev, t, &c, 0, earliest_found(o));
+        if (isnan(at)) return 0;         /* after an event found here: rolled back */
+        if (touch(o, ev, p, at)) return 1; /* due again at once, as after an impact */
+    }
     if (inside_events(o, ev, t, p, &pa, &pb, &c)) return 1;
     if (o->p.use_heap && (quiet_slide(o, p, t, &c) || quiet_support(o, p, t, &pa, &pb, &c))) p->quiet_until = o->bp.T;
     return 0;
