@@ -1171,14 +1171,47 @@ static int quiet_support(vrOwner *o, const vrPair *p, double t, const vrPose *pa
 /* Evaluates pair pi at t.  t_prev is the previous grid point (t_prev == t at
  * a span start, where no step can be bisected).  Returns 1 with *ev when the
  * pair has an event. */
+/* A pair outside the envelope looked at after an event was found at this
+ * grid point (before it, at `wanted`): all this look finds at t, a key, an
+ * inside contact, comes after that event and is rolled back when it is
+ * answered (vrOwner_Advance puts the pair back as remembered), so only an
+ * impact before it matters.  The same decisions as evaluate's, without
+ * its keys (in a heap of 1,000 bodies, 30 % of all looks). */
+static int impact_before_found(vrOwner *o, int pi, double t, double t_prev, double wanted, vrEvent *ev)
+{
+    vrPair *p = &o->pair[pi];
+    vrBody *A = o->body[p->a], *B = o->body[p->b];
+    vrPose pa, pb;
+    vrContact c;
+    vec3 dir;
+    double dist, at;
+    if (cheap_look_allowed(o, p)) {
+        if (sphere_gap(o, p, t, &dir) > o->p.d) return 0;
+        if (!is_sphere(A) && !is_sphere(B)) {
+            vrBody_Pose(A, t, &pa);
+            vrBody_Pose(B, t, &pb);
+            if (vrContact_Quick(&A->shape, &pa, &B->shape, &pb, &p->cache, &dist, &dir) == 0) {
+                o->checks++;
+                if (dist > o->p.d + VR_QUICK_CLEAR) return 0;
+            }
+        }
+    }
+    query(o, p, t, 1, &pa, &pb, &c);
+    if (c.dist > o->p.d || !(t > t_prev)) return 0;
+    at = bisect(o, p, t_prev, t, &c, o->p.d, wanted);
+    return !isnan(at) && impact(o, ev, p, at);
+}
+
 static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
 {
     vrPair *p = &o->pair[pi];
     vrPose pa, pb;
     vrContact c;
     int was_inside;
+    double wanted = earliest_found(o);
     remember(o, pi, t);
     p->quiet_until = -INFINITY;
+    if (o->p.use_heap && !p->inside && wanted < t) return impact_before_found(o, pi, t, t_prev, wanted, ev);
     if (clear_by_spheres(o, pi, t) || clear_by_walk(o, pi, t)) return 0;
     query(o, p, t, 1, &pa, &pb, &c);   /* the region is only made inside the envelope */
     p->t_check = t;
