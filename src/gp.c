@@ -766,9 +766,15 @@ static double bisect(vrOwner *o, vrPair *p, double lo, double hi, const vrContac
             in = within(o, p, mid, level, lo0, hi0, &seen);
             near[in] = seen;
         }
-        if (in) hi = mid;
-        else lo = mid, lo_tested = 1;
-        if (lo >= wanted) return NAN;
+        if (in) {
+            hi = mid;
+        } else {
+            lo = mid, lo_tested = 1;
+            /* lo tested apart: the event comes after it.  (An untested lo
+             * may itself be the event, at the instant of one found here:
+             * a tie, that pair order decides.) */
+            if (lo >= wanted) return NAN;
+        }
     }
     return hi;
 }
