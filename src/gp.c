@@ -79,6 +79,10 @@ struct vrOwner {
     vrHeap heap;
     vrIntList active;         /* inside pairs: due at every grid point, kept out of the heap */
     vrIntList flagged, due, due_inside;  /* due at a grid point: outside the envelope, inside */
+    /* keys of pairs the walk found clear at the grid point being looked at,
+     * made once it is known whether an impact before it rolls them back */
+    int defer_keys, nlater, latercap;
+    struct vrLaterKey { int pair; double dist; vec3 n; } *later;
     vrUndo *undo;
     int nundo, undocap;
     vrEvent *pending;         /* events found at pending_t not yet taken */
@@ -150,6 +154,7 @@ void vrOwner_Free(vrOwner *o)
     free(o->flagged.v);
     free(o->due.v);
     free(o->due_inside.v);
+    free(o->later);
     free(o->undo);
     free(o->pending);
     free(o->found);
@@ -1013,8 +1018,35 @@ static int clear_by_walk(vrOwner *o, int pi, double t)
     o->checks++;
     if (dist <= o->p.d + VR_QUICK_CLEAR) return 0;
     p->t_check = t;
+    if (o->defer_keys && vrGrow((void **)&o->later, &o->latercap, o->nlater + 1, sizeof *o->later) == 0) {
+        struct vrLaterKey *k = &o->later[o->nlater++];
+        k->pair = pi, k->dist = dist - VR_QUICK_CLEAR, k->n = n;
+        return 1;
+    }
     settle(o, pi, 0, pair_key(o, p, t, dist - VR_QUICK_CLEAR, n));
     return 1;
+}
+
+/* an event found so far comes before t */
+static int impact_before(const vrOwner *o, double t)
+{
+    int i;
+    for (i = 0; i < o->nfound; i++)
+        if (o->found[i].t < t) return 1;
+    return 0;
+}
+
+/* the keys clear_by_walk put off at grid point t: made, unless an impact
+ * before t means they would be rolled back unused (in a heap of 1,000
+ * bodies, most looks at a grid point with an impact come before it) */
+static void later_keys(vrOwner *o, double t)
+{
+    int i, drop = impact_before(o, t);
+    for (i = 0; i < o->nlater && !drop; i++) {
+        const struct vrLaterKey *k = &o->later[i];
+        settle(o, k->pair, 0, pair_key(o, &o->pair[k->pair], t, k->dist, k->n));
+    }
+    o->nlater = 0;
 }
 
 /* the gap between the bodies' bounding spheres about their centres at t (a
@@ -1346,15 +1378,6 @@ static int overlaps(vrOwner *o, int pi, double t)
     return within(o, &o->pair[pi], t, VR_QUICK_CLEAR, t, t, NULL);
 }
 
-/* an event found so far comes before t */
-static int impact_before(const vrOwner *o, double t)
-{
-    int i;
-    for (i = 0; i < o->nfound; i++)
-        if (o->found[i].t < t) return 1;
-    return 0;
-}
-
 int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *ev)
 {
     long k = 1;
@@ -1367,7 +1390,9 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     while (k <= g->n) {
         double t = vrGrid_Point(g, k), key;
         collect_due(o, t);
+        o->defer_keys = 1;
         for (i = 0; i < o->due.n; i++) evaluate_into_found(o, o->due.v[i], t, vrGrid_Point(g, k - 1), 1);
+        o->defer_keys = 0;
         /* A pair inside the envelope has its events at grid points only,
          * unless it overlaps there (touch): after an event bisected to
          * before t the others could only be rolled back (in a heap of
@@ -1376,6 +1401,7 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
         for (i = 0; i < o->due_inside.n; i++)
             if (!impact_before(o, t) || overlaps(o, o->due_inside.v[i], t))
                 evaluate_into_found(o, o->due_inside.v[i], t, vrGrid_Point(g, k - 1), 1);
+        later_keys(o, t);
         if (o->nfound) return take_first(o, t, ev);
         if (!o->p.use_heap || o->active.n > 0) { k++; continue; }
         if (vrHeap_Top(&o->heap, &key) < 0) break;
