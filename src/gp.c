@@ -1004,6 +1004,17 @@ static int cheap_look_allowed(const vrOwner *o, const vrPair *p)
  * and a key from that distance (VR_QUICK_CLEAR below it: the canonical
  * distance a full look measures may be that much less; heap = 0 makes the
  * full look, and the two must agree) */
+/* a pair found outside at the grid point being looked at: its key (from
+ * dist along n) is made by later_keys; 0 when keys are made at once */
+static int put_off_key(vrOwner *o, int pi, double dist, vec3 n)
+{
+    struct vrLaterKey *k;
+    if (!o->defer_keys || vrGrow((void **)&o->later, &o->latercap, o->nlater + 1, sizeof *o->later) != 0) return 0;
+    k = &o->later[o->nlater++];
+    k->pair = pi, k->dist = dist, k->n = n;
+    return 1;
+}
+
 static int clear_by_walk(vrOwner *o, int pi, double t)
 {
     vrPair *p = &o->pair[pi];
@@ -1018,12 +1029,7 @@ static int clear_by_walk(vrOwner *o, int pi, double t)
     o->checks++;
     if (dist <= o->p.d + VR_QUICK_CLEAR) return 0;
     p->t_check = t;
-    if (o->defer_keys && vrGrow((void **)&o->later, &o->latercap, o->nlater + 1, sizeof *o->later) == 0) {
-        struct vrLaterKey *k = &o->later[o->nlater++];
-        k->pair = pi, k->dist = dist - VR_QUICK_CLEAR, k->n = n;
-        return 1;
-    }
-    settle(o, pi, 0, pair_key(o, p, t, dist - VR_QUICK_CLEAR, n));
+    if (!put_off_key(o, pi, dist - VR_QUICK_CLEAR, n)) settle(o, pi, 0, pair_key(o, p, t, dist - VR_QUICK_CLEAR, n));
     return 1;
 }
 
@@ -1036,7 +1042,7 @@ static int impact_before(const vrOwner *o, double t)
     return 0;
 }
 
-/* the keys clear_by_walk put off at grid point t: made, unless an impact
+/* the keys put off at grid point t: made, unless an impact
  * before t means they would be rolled back unused (in a heap of 1,000
  * bodies, most looks at a grid point with an impact come before it) */
 static void later_keys(vrOwner *o, double t)
@@ -1255,7 +1261,8 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     p->t_check = t;
     if (c.dist > o->p.d) {
         was_inside = p->inside;
-        settle(o, pi, 0, pair_key(o, p, t, c.dist, c.n));
+        if (was_inside || t == t_prev || !put_off_key(o, pi, c.dist, c.n))
+            settle(o, pi, 0, pair_key(o, p, t, c.dist, c.n));
         return was_inside || t == t_prev ? lost_support(o, ev, t, p, &c) : 0;
     }
     if (!p->inside && t > t_prev) {
