@@ -61,6 +61,14 @@ vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t)
     return &u->body[u->n++];
 }
 
+int vrUpdate_Bodies(vrUpdate *u, vrBody *x, vrBody *y, double t, vrBodyState **sx, vrBodyState **sy)
+{
+    if ((y && !vrUpdate_Body(u, y, t)) || !vrUpdate_Body(u, x, t)) return -1;
+    *sx = vrUpdate_Body(u, x, t);   /* found again: nothing added, nothing moved */
+    *sy = y ? vrUpdate_Body(u, y, t) : NULL;
+    return 0;
+}
+
 void vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f)
 {
     int i;

@@ -71,6 +71,10 @@ void vrUpdate_Init(vrUpdate *u);
 void vrUpdate_Free(vrUpdate *u);
 /* the slot of body id in u, added as a capture of b at time t if absent */
 vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t);
+/* x's state and, when y is not NULL, y's (else *sy = NULL), both in the
+ * update: both are added before either pointer is taken, since adding one
+ * may move the array; -1 when out of memory */
+int vrUpdate_Bodies(vrUpdate *u, vrBody *x, vrBody *y, double t, vrBodyState **sx, vrBodyState **sy);
 void vrBody_Capture(vrBody *b, double t, vrBodyState *st);
 /* the body's anchor as it is (raw = 1) */
 void vrBody_CaptureAnchor(const vrBody *b, vrBodyState *st);

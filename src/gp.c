@@ -79,8 +79,9 @@ struct vrOwner {
     vrHeap heap;
     vrIntList active;         /* inside pairs: due at every grid point, kept out of the heap */
     vrIntList flagged, due, due_inside;  /* due at a grid point: outside the envelope, inside */
-    /* keys of pairs the walk found clear at the grid point being looked at,
-     * made once it is known whether an impact before it rolls them back */
+    /* keys of pairs found outside at the grid point being looked at (by the
+     * walk or a full look), made once it is known whether an impact before
+     * it rolls them back */
     int defer_keys, nlater, latercap;
     struct vrLaterKey { int pair; double dist; vec3 n; } *later;
     vrUndo *undo;
@@ -1000,10 +1001,6 @@ static int cheap_look_allowed(const vrOwner *o, const vrPair *p)
     return o->p.use_heap && !p->inside && !supported_pair(o, p->a, p->b);
 }
 
-/* the walk's distance when it is clear of the envelope: outside, no event,
- * and a key from that distance (VR_QUICK_CLEAR below it: the canonical
- * distance a full look measures may be that much less; heap = 0 makes the
- * full look, and the two must agree) */
 /* a pair found outside at the grid point being looked at: its key (from
  * dist along n) is made by later_keys; 0 when keys are made at once */
 static int put_off_key(vrOwner *o, int pi, double dist, vec3 n)
@@ -1015,6 +1012,10 @@ static int put_off_key(vrOwner *o, int pi, double dist, vec3 n)
     return 1;
 }
 
+/* the walk's distance when it is clear of the envelope: outside, no event,
+ * and a key from that distance (VR_QUICK_CLEAR below it: the canonical
+ * distance a full look measures may be that much less; heap = 0 makes the
+ * full look, and the two must agree) */
 static int clear_by_walk(vrOwner *o, int pi, double t)
 {
     vrPair *p = &o->pair[pi];
@@ -1029,18 +1030,13 @@ static int clear_by_walk(vrOwner *o, int pi, double t)
     o->checks++;
     if (dist <= o->p.d + VR_QUICK_CLEAR) return 0;
     p->t_check = t;
-    if (!put_off_key(o, pi, dist - VR_QUICK_CLEAR, n)) settle(o, pi, 0, pair_key(o, p, t, dist - VR_QUICK_CLEAR, n));
+    if (!put_off_key(o, pi, dist - VR_QUICK_CLEAR, n))
+        settle(o, pi, 0, pair_key(o, p, t, dist - VR_QUICK_CLEAR, n));
     return 1;
 }
 
 /* an event found so far comes before t */
-static int impact_before(const vrOwner *o, double t)
-{
-    int i;
-    for (i = 0; i < o->nfound; i++)
-        if (o->found[i].t < t) return 1;
-    return 0;
-}
+static int impact_before(const vrOwner *o, double t) { return earliest_found(o) < t; }
 
 /* the keys put off at grid point t: made, unless an impact
  * before t means they would be rolled back unused (in a heap of 1,000
@@ -1215,47 +1211,15 @@ static int quiet_support(vrOwner *o, const vrPair *p, double t, const vrPose *pa
 /* Evaluates pair pi at t.  t_prev is the previous grid point (t_prev == t at
  * a span start, where no step can be bisected).  Returns 1 with *ev when the
  * pair has an event. */
-/* A pair outside the envelope looked at after an event was found at this
- * grid point (before it, at `wanted`): all this look finds at t, a key, an
- * inside contact, comes after that event and is rolled back when it is
- * answered (vrOwner_Advance puts the pair back as remembered), so only an
- * impact before it matters.  The same decisions as evaluate's, without
- * its keys (in a heap of 1,000 bodies, 30 % of all looks). */
-static int impact_before_found(vrOwner *o, int pi, double t, double t_prev, double wanted, vrEvent *ev)
-{
-    vrPair *p = &o->pair[pi];
-    vrBody *A = o->body[p->a], *B = o->body[p->b];
-    vrPose pa, pb;
-    vrContact c;
-    vec3 dir;
-    double dist, at;
-    if (cheap_look_allowed(o, p)) {
-        if (sphere_gap(o, p, t, &dir) > o->p.d) return 0;
-        if (!is_sphere(A) && !is_sphere(B)) {
-            vrBody_Pose(A, t, &pa);
-            vrBody_Pose(B, t, &pb);
-            if (vrContact_Quick(&A->shape, &pa, &B->shape, &pb, &p->cache, &dist, &dir) == 0) {
-                o->checks++;
-                if (dist > o->p.d + VR_QUICK_CLEAR) return 0;
-            }
-        }
-    }
-    query(o, p, t, 1, &pa, &pb, &c);
-    if (c.dist > o->p.d || !(t > t_prev)) return 0;
-    at = bisect(o, p, t_prev, t, &c, o->p.d, wanted);
-    return !isnan(at) && impact(o, ev, p, at);
-}
-
 static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
 {
     vrPair *p = &o->pair[pi];
     vrPose pa, pb;
     vrContact c;
     int was_inside;
-    double wanted = earliest_found(o);
+    double wanted = earliest_found(o);   /* events found here so far: later ones are dropped */
     remember(o, pi, t);
     p->quiet_until = -INFINITY;
-    if (o->p.use_heap && !p->inside && wanted < t) return impact_before_found(o, pi, t, t_prev, wanted, ev);
     if (clear_by_spheres(o, pi, t) || clear_by_walk(o, pi, t)) return 0;
     query(o, p, t, 1, &pa, &pb, &c);   /* the region is only made inside the envelope */
     p->t_check = t;
@@ -1266,7 +1230,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
         return was_inside || t == t_prev ? lost_support(o, ev, t, p, &c) : 0;
     }
     if (!p->inside && t > t_prev) {
-        double at = bisect(o, p, t_prev, t, &c, o->p.d, earliest_found(o));
+        double at = bisect(o, p, t_prev, t, &c, o->p.d, wanted);
         if (isnan(at) || impact(o, ev, p, at)) {
             settle(o, pi, p->inside, t);  /* due again at once: it is rolled back or re-evaluated */
             return !isnan(at);
@@ -1276,7 +1240,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     settle(o, pi, 1, t);
     for_events(o, p, t, &pa, &pb, &c);   /* the query above had the region: event_query's */
     if (was_inside && t > t_prev && c.dist < -VR_PENETRATION_TOL) {
-        double at = bisect(o, p, t_prev, t, &c, 0, earliest_found(o));
+        double at = bisect(o, p, t_prev, t, &c, 0, wanted);
         if (isnan(at)) return 0;         /* after an event found here: rolled back */
         if (touch(o, ev, p, at)) return 1; /* due again at once, as after an impact */
     }
@@ -1698,12 +1662,8 @@ static int respond_support(vrOwner *o, const vrEvent *ev, vrUpdate *up)
 {
     vrBody *x = o->body[ev->body], *y = o->body[ev->partner];
     int moving = ev->kind == VR_EV_SUPPORT_BEGIN && !frozen(y), i, k = 0;
-    vrBodyState *st, *sy = NULL;
-    /* the partner first: fetching it again below then adds nothing, and
-     * st stays where it is */
-    if (moving && !vrUpdate_Body(up, y, ev->t)) return -1;
-    if (!(st = vrUpdate_Body(up, x, ev->t))) return -1;
-    if (moving) sy = vrUpdate_Body(up, y, ev->t);
+    vrBodyState *st, *sy;
+    if (vrUpdate_Bodies(up, x, moving ? y : NULL, ev->t, &st, &sy) != 0) return -1;
     if (ev->kind == VR_EV_SUPPORT_BEGIN) {
         settle_on_support(o, ev, st, sy);
         st->support[st->nsupport].partner = ev->partner;

@@ -172,12 +172,10 @@ static int carried(vrWorld *w, const vrCandidate *c, int k, vec3 g, double T)
 static int settle_joint(vrWorld *w, vrUpdate *up, vrBody *b, double T, const vrCandidate *c)
 {
     vrBody *y = &w->obj[c->partner]->body;
-    int moving = !y->is_static && !y->resting;
-    vrBodyState *st, *sy = NULL;
+    int moving = vrBody_IsFree(y);
+    vrBodyState *st, *sy;
     double share = moving ? b->inv_mass / (b->inv_mass + y->inv_mass) : 1, along;
-    if (moving && !vrUpdate_Body(up, y, T)) return -1;   /* first: fetching it again adds nothing */
-    if (!(st = vrUpdate_Body(up, b, T))) return -1;
-    if (moving) sy = vrUpdate_Body(up, y, T);
+    if (vrUpdate_Bodies(up, b, moving ? y : NULL, T, &st, &sy) != 0) return -1;
     along = vec3_dot(c->n, vec3_sub(st->v, c->partner_velocity));
     st->v = vec3_madd(st->v, -share * along, c->n);
     if (sy) sy->v = vec3_madd(sy->v, b->mass * share * along * y->inv_mass, c->n);
