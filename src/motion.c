@@ -24,6 +24,19 @@ static double spin_of(const vrBody *b)
     return b->is_static || b->i_min <= 0 ? 0.0 : vec3_len(b->m.L) / b->i_min;
 }
 
+/* An isotropic body (a sphere, a cube) gets an exactly scalar tensor, so
+ * that its world tensor R I R^T is I itself, not I plus rounding: those
+ * rounding-sized off-diagonal entries gave the response matrix a new zero
+ * pattern, and a new KLU factorisation, at almost every contact */
+static void make_scalar(vrBody *b)
+{
+    mat33 id = mat33_identity();
+    double c = (b->moments.x + b->moments.y + b->moments.z) / 3.0;
+    b->moments = vec3_make(c, c, c);
+    b->inertia = mat33_scale(&id, c);
+    b->inv_inertia = b->is_static ? mat33_zero() : mat33_scale(&id, 1.0 / c);
+}
+
 void vrBody_SetMassProperties(vrBody *b, double mass, const mat33 *inertia_unit, double r_in, double r_out)
 {
     mat33 axes;
@@ -41,9 +54,10 @@ void vrBody_SetMassProperties(vrBody *b, double mass, const mat33 *inertia_unit,
     b->i_min = b->moments.x;
     span = b->moments.z * ISOTROPY_TOL;
     b->sym_axis = -1;
-    if (b->moments.y - b->moments.x <= span && b->moments.z - b->moments.y <= span)
+    if (b->moments.y - b->moments.x <= span && b->moments.z - b->moments.y <= span) {
         b->sym_axis = 3;                /* isotropic */
-    else if (b->moments.y - b->moments.x <= span)
+        make_scalar(b);
+    } else if (b->moments.y - b->moments.x <= span)
         b->sym_axis = 2;                /* I1 = I2: the distinct axis is z */
     else if (b->moments.z - b->moments.y <= span)
         b->sym_axis = 0;                /* I2 = I3: the distinct axis is x */
@@ -407,12 +421,12 @@ vec3 vrBody_PointVelocity(const vrBody *b, double t, const vrPose *pose, vec3 p)
 
 mat33 vrBody_InvInertiaWorld(const vrBody *b, const vrPose *pose)
 {
-    return mat33_rotate_tensor(&pose->R, &b->inv_inertia);
+    return b->sym_axis == 3 ? b->inv_inertia : mat33_rotate_tensor(&pose->R, &b->inv_inertia);
 }
 
 mat33 vrBody_InertiaWorld(const vrBody *b, const vrPose *pose)
 {
-    return mat33_rotate_tensor(&pose->R, &b->inertia);
+    return b->sym_axis == 3 ? b->inertia : mat33_rotate_tensor(&pose->R, &b->inertia);
 }
 
 double vrBody_SpeedBound(const vrBody *b, double t, double span, double accel, double max_linear)

@@ -30,11 +30,12 @@
 #define RESIDUAL_FINE 1e-15   /* rounding: with RCOND_FINE, no refinement needed */
 #define RCOND_FINE 1e-3
 
-/* zero patterns with a canonical factorisation kept: a 100-object room
- * meets about 500 in 100 frames and 1,600 in 600 (exact zeros of lever
- * arms, inertias and normals vary), so a table, open addressing, emptied
- * when 3/4 full (1,024 slots refactored 2,723 times in those 600 frames,
- * 1.4 % of its instructions; a few MB of factors at most) */
+/* zero patterns with a canonical factorisation kept: exact zeros of lever
+ * arms and normals vary (a wall's normal is an axis; a cube's or sphere's
+ * world inertia is scalar, motion.c), so a 100-object room under gravity
+ * meets about 60 in 200 frames and 75 in 600 (808 and 1,600 when rotated
+ * inertias carried rounding); a table, open addressing, emptied when 3/4
+ * full (a few MB of factors at most) */
 #define PATTERNS 4096
 
 typedef struct vrPattern {
