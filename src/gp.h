@@ -17,14 +17,11 @@
 #ifndef VROC_GP_H
 #define VROC_GP_H
 
-#include "event.h"
-#include "response.h"
+#include "respond.h"
 #include "schedule.h"
 
-#define VR_V_EPS 1e-3          /* m/s: slower approaches inside the envelope need no impulse */
 #define VR_INSTANT_MAX 64      /* responses at one instant before moving on (SPEC 3.1) */
 #define VR_PENETRATION_TOL 1e-9
-#define VR_PUSHOUT_GAP 1e-6    /* m: a push-out leaves this gap (MPR is good to 1e-9) */
 #define VR_START_OVERLAP 1e-6  /* m: deeper overlaps refuse to start (SPEC 1.4) */
 
 typedef struct vrParams {
