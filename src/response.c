@@ -266,7 +266,12 @@ vrResponder *vrResponder_Create(void)
     /* no row scaling: a refactor keeps its pivots, and an LU without
      * pivoting of D A is D times that of A, so scaling only adds rounding;
      * the pattern is ours, so KLU's input checks are not needed either.
-     * 35 % of klu_refactor's work; polish() still checks every answer. */
+     * 35 % of klu_refactor's work.  klu_rcond then reads the rows in their
+     * units (a light body's inertia rows against a static body's identity
+     * rows), so polish() refines such contacts more often: a few % of
+     * Office's solves cost a second klu_solve, and every answer is still
+     * checked.  (Exact power-of-two equilibration, which keeps rcond
+     * unit-free, cost more than those refinements.) */
     r->common.scale = -1;
     build_pattern(r);
     r->symbolic = klu_analyze(N, r->Ap, r->Ai, &r->common);
