@@ -269,7 +269,7 @@ vrResponder *vrResponder_Create(void)
      * 35 % of klu_refactor's work.  klu_rcond then reads the rows in their
      * units (a light body's inertia rows against a static body's identity
      * rows), so polish() refines such contacts more often (Office: 1,421
-     * of 1,570 solves, 603 with KLU's scaling; still 8 % fewer
+     * of 1,570 solves, 603 with KLU's scaling; still 7 % fewer
      * instructions in all), and every answer is still checked.  (Exact
      * power-of-two equilibration, which keeps rcond unit-free, cost more
      * in the peers' scene than those refinements save in Office.) */
