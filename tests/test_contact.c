@@ -696,27 +696,58 @@ static int test_penetration_direction_points_from_a_to_b(void)
 
 /* Overlapping polyhedra: vrContact reports libccd's depth and direction,
  * one region point at libccd's position; spheres use the exact closed form. */
-static int test_penetration_contact_is_libccd_depth_and_direction(void)
+/* Physics fuzzer seed 3249: a small box on the floor pushed 2 cm into a
+ * tall wall.  libccd's MPR refined its portal from the centre line, the
+ * wall's centre 1.5 m above: direction (0.14, 0.02, -0.99), 13 cm deep,
+ * and the push-out drove the box through the floor.  The wall's face
+ * overlaps it by 2 cm: that is the push. */
+static int test_a_box_in_a_walls_corner_is_pushed_out_of_the_wall(void)
+{
+    Fix wall, k;
+    vrPose pw = vrPose_make(vec3_make(-1.6, 0, 1.5), quat_identity());
+    vrPose pk = vrPose_make(vec3_make(-1.5 + 0.0732188 - 0.02, 0.364, 0.0424), quat_identity());
+    vrContact r;
+    double depth;
+    vec3 dir, pos;
+    ENSURE(box(&wall, 0.1, 1.6, 1.6) == 0 && box(&k, 0.0732188, 0.116975, 0.037551) == 0);
+    ENSURE(vrPenetration(&wall.s, &pw, &k.s, &pk, &depth, &dir, &pos) == 0);
+    printf("    libccd: depth %.4f along (%.3f, %.3f, %.3f)\n", depth, dir.x, dir.y, dir.z);
+    ENSURE(vrContact_Region(&wall.s, &pw, &k.s, &pk, 0.005, NULL, &r) == 0);
+    ENSURE_NEAR(r.dist, -0.02, 1e-12);
+    ENSURE_NEAR(vec3_dist(r.n, vec3_make(1, 0, 0)), 0, 1e-12);
+    return 0;
+}
+
+/* Overlapping polyhedra: libccd's depth and direction, or a face normal
+ * along which they overlap less; either way moving b by the depth along
+ * the normal separates them, and the position is libccd's */
+static int test_penetration_contact_separates_by_the_shallower_push(void)
 {
     Fix c, m, s;
-    int k, n = 0;
+    int k, n = 0, by_face = 0;
     ENSURE(box(&c, 0.25, 0.25, 0.25) == 0 && poly(&m, 2) == 0);
     sphere(&s, 0.2);
     for (k = 0; k < 500; k++) {
         const vrShape *a = &c.s, *b = k & 1 ? &m.s : &c.s;
         vrPose pa = vrPose_make(vec3_zero(), rnd_rotation());
-        vrPose pb = vrPose_make(vec3_scale(rnd_unit(), rnd(0.05, 0.35)), rnd_rotation());
-        vrContact r;
+        vrPose pb = vrPose_make(vec3_scale(rnd_unit(), rnd(0.05, 0.35)), rnd_rotation()), moved;
+        vrContact r, after;
         vec3 dir, pos;
         double depth;
         ENSURE(vrContact_Region(a, &pa, b, &pb, 0.01, NULL, &r) == 0);
         if (vrPenetration(a, &pa, b, &pb, &depth, &dir, &pos) != 0) continue;
         n++;
-        ENSURE_NEAR(r.dist, -depth, 1e-15);
-        ENSURE_NEAR(vec3_dist(r.n, dir), 0, 1e-15);
+        ENSURE(r.dist < 0 && -r.dist <= depth);
+        ENSURE_NEAR(vec3_len(r.n), 1, 1e-15);
         ENSURE(r.npoints == 1 && vec3_dist(r.point[0], pos) == 0);
+        by_face += vec3_dist(r.n, dir) > 1e-15;
+        if (vec3_dist(r.n, dir) <= 1e-15) ENSURE_NEAR(r.dist, -depth, 1e-15);
+        moved = vrPose_make(vec3_madd(pb.p, -r.dist + 1e-6, r.n), pb.q);
+        ENSURE(vrContact_Distance(a, &pa, b, &moved, NULL, &after) == 0);
+        ENSURE_MSG(after.dist > 0, "case %d: %g apart after the push", k, after.dist);
     }
-    ENSURE(n > 400);
+    printf("    %d overlaps, %d pushed along a face normal\n", n, by_face);
+    ENSURE(n > 400 && by_face > 0);
     for (k = 0; k < 200; k++) { /* a sphere centre inside a polyhedron: exact depth */
         vrPose pa = vrPose_make(vec3_zero(), rnd_rotation()), ps = vrPose_make(vec3_scale(rnd_unit(), 0.05), quat_identity());
         vec3 x = vrPose_invapply(&pa, ps.p);
@@ -848,7 +879,8 @@ int main(int argc, char **argv)
     RUN_TEST(test_sphere_box_closed_form);
     RUN_TEST(test_sphere_polyhedron_agrees_with_the_box_closed_form);
     RUN_TEST(test_penetration_direction_points_from_a_to_b);
-    RUN_TEST(test_penetration_contact_is_libccd_depth_and_direction);
+    RUN_TEST(test_penetration_contact_separates_by_the_shallower_push);
+    RUN_TEST(test_a_box_in_a_walls_corner_is_pushed_out_of_the_wall);
     RUN_TEST(test_contact_is_robust_on_thin_large_and_touching_shapes);
     RUN_TEST(test_shapes_that_touch_exactly_get_the_face_normal_and_region);
     return test_summary();
