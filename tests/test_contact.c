@@ -715,6 +715,8 @@ static int test_a_box_in_a_walls_corner_is_pushed_out_of_the_wall(void)
     ENSURE(vrContact_Region(&wall.s, &pw, &k.s, &pk, 0.005, NULL, &r) == 0);
     ENSURE_NEAR(r.dist, -0.02, 1e-12);
     ENSURE_NEAR(vec3_dist(r.n, vec3_make(1, 0, 0)), 0, 1e-12);
+    unfix(&wall);
+    unfix(&k);
     return 0;
 }
 
