@@ -673,36 +673,6 @@ static void set_result(vrContact *out, double dist, vec3 n, vec3 pa, vec3 pb)
     out->pb = pb;
 }
 
-static vec3 touching_axis(const Gap *g, double *gap);
-
-/* Overlap: libccd's depth, direction and position (step 7), or the face
- * normal of either shape along which they overlap least, when that is
- * shallower (a separating-axis test; translating by its overlap along it
- * separates them).  MPR's direction is the portal's it refines from the
- * centre line: for a small box in a tall wall's corner with the floor it
- * pointed 82 degrees off the wall's face, and the push-out along it drove
- * the box 13 cm down into the floor (physics fuzzer seed 3249).  When
- * libccd sees no overlap (grazing contact) the pair touches: distance 0. */
-static int penetration_contact(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb, double d,
-                               const Gap *g, vec3 ca, vec3 cb, vrContact *out)
-{
-    double depth, gap;
-    vec3 dir, pos, axis;
-    if (vrPenetration(a, pa, b, pb, &depth, &dir, &pos) == 0) {
-        axis = touching_axis(g, &gap);
-        if (gap < 0 && -gap < depth) set_result(out, gap, axis, pos, pos);
-        else set_result(out, -depth, unit_or_up(dir), pos, pos);
-    } else {
-        pos = vec3_lerp(ca, cb, 0.5);
-        set_result(out, 0, unit_or_up(vec3_sub(pb->p, pa->p)), pos, pos);
-    }
-    if (d >= 0) {
-        out->npoints = 1;
-        out->point[0] = pos;
-    }
-    return 0;
-}
-
 /* Gaps the walk measures below this are rounding: whether it sees the
  * shapes a hair apart or a hair inside each other depends on where it
  * started (a worker's cache differs from the serial owner's), so neither
@@ -760,6 +730,34 @@ static int touching_features(const vrShape *a, const vrPose *pa, const vrShape *
     vec3 axis = touching_axis(g, &gap);
     if (!(fabs(gap) <= SHALLOW_TOL) || deep_overlap(a, pa, b, pb)) return -1;
     if (canonical(g->a, g->b, axis, fa, fb, c) != 0 || !(fabs(c->dist) <= SHALLOW_TOL)) return -1;
+    return 0;
+}
+
+/* Overlap: libccd's depth, direction and position (step 7), or the face
+ * normal of either shape along which they overlap least, when that is
+ * shallower (a separating-axis test; translating by its overlap along it
+ * separates them).  MPR's direction is the portal's it refines from the
+ * centre line: for a small box in a tall wall's corner with the floor it
+ * pointed 82 degrees off the wall's face, and the push-out along it drove
+ * the box 13 cm down into the floor (physics fuzzer seed 3249).  When
+ * libccd sees no overlap (grazing contact) the pair touches: distance 0. */
+static int penetration_contact(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb, double d,
+                               const Gap *g, vec3 ca, vec3 cb, vrContact *out)
+{
+    double depth, gap;
+    vec3 dir, pos, axis;
+    if (vrPenetration(a, pa, b, pb, &depth, &dir, &pos) == 0) {
+        axis = touching_axis(g, &gap);
+        if (gap < 0 && -gap < depth) set_result(out, gap, axis, pos, pos);
+        else set_result(out, -depth, unit_or_up(dir), pos, pos);
+    } else {
+        pos = vec3_lerp(ca, cb, 0.5);
+        set_result(out, 0, unit_or_up(vec3_sub(pb->p, pa->p)), pos, pos);
+    }
+    if (d >= 0) {
+        out->npoints = 1;
+        out->point[0] = pos;
+    }
     return 0;
 }
 

@@ -13,39 +13,40 @@ typedef struct vrResponding {
     const vrFlight *flight;
 } vrResponding;
 
-static void impact_body(vrBody *b, double t, vec3 c, vrImpactBody *ib, vrPose *pose)
+static void impact_body(vrBody *b, double t, vec3 c, vrImpactBody *ib)
 {
-    vrBody_Pose(b, t, pose);
+    vrPose pose;
+    vrBody_Pose(b, t, &pose);
     ib->is_static = b->is_static;
     ib->mass = b->mass;
-    ib->inertia = vrBody_InertiaWorld(b, pose);
-    ib->inv_inertia = vrBody_InvInertiaWorld(b, pose);
-    ib->p = vec3_sub(c, pose->p);
+    ib->inertia = vrBody_InertiaWorld(b, &pose);
+    ib->inv_inertia = vrBody_InvInertiaWorld(b, &pose);
+    ib->p = vec3_sub(c, pose.p);
     vrBody_Velocity(b, t, &ib->v);
-    ib->w = vrBody_Omega(b, pose);
+    ib->w = vrBody_Omega(b, &pose);
 }
 
-/* The new state of a body after an impulse: woken, hit, new velocities.
+/* The new state of a body after an impulse: woken, hit, new velocities
+ * (ib: the body as the solve saw it, its world inertia and lever arm).
  * max_angular clamps the spin at every event (SPEC 3.2); where the clamp
  * bites, the body's velocity along the normal makes up for the change of
  * its contact point's normal velocity, so that one impulse still settles
  * the contact (the clamp gives up momentum either way). */
-static int kick(const vrResponding *o, vrUpdate *up, vrBody *b, const vrEvent *ev, vec3 v, vec3 w, const vrPose *pose)
+static int kick(const vrResponding *o, vrUpdate *up, vrBody *b, const vrEvent *ev, const vrImpactBody *ib, vec3 v,
+                vec3 w)
 {
     vrBodyState *st;
-    mat33 I;
     double spin = vec3_len(w), cap = o->flight->max_angular;
     if (b->is_static) return 0;
     st = vrUpdate_Body(up, b, ev->t);
     if (!st) return -1;
     if (spin > cap) {
-        vec3 clamped = vec3_scale(w, cap / spin), p = vec3_sub(ev->c, pose->p);
-        v = vec3_madd(v, -vec3_dot(ev->n, vec3_cross(vec3_sub(clamped, w), p)), ev->n);
+        vec3 clamped = vec3_scale(w, cap / spin);
+        v = vec3_madd(v, -vec3_dot(ev->n, vec3_cross(vec3_sub(clamped, w), ib->p)), ev->n);
         w = clamped;
     }
-    I = vrBody_InertiaWorld(b, pose);
     st->v = v;
-    st->L = b->rot == VR_ROT_NONE && vec3_len2(w) == 0 ? vec3_zero() : mat33_mulv(&I, w);
+    st->L = b->rot == VR_ROT_NONE && vec3_len2(w) == 0 ? vec3_zero() : mat33_mulv(&ib->inertia, w);
     st->resting = 0;
     st->hit = 1;
     return 0;
@@ -55,12 +56,11 @@ static int respond_impulse(const vrResponding *o, const vrEvent *ev, vrUpdate *u
 {
     vrBody *A = o->body[ev->a], *B = o->body[ev->b];
     vrImpactBody ia, ib;
-    vrPose pa, pb;
     vec3 v1, w1, v2, w2;
-    impact_body(A, ev->t, ev->c, &ia, &pa);
-    impact_body(B, ev->t, ev->c, &ib, &pb);
+    impact_body(A, ev->t, ev->c, &ia);
+    impact_body(B, ev->t, ev->c, &ib);
     if (vrResponder_Solve(o->responder, &ia, &ib, ev->n, ev->e, &v1, &w1, &v2, &w2, NULL) != 0) return -1;
-    if (kick(o, up, A, ev, v1, w1, &pa) != 0 || kick(o, up, B, ev, v2, w2, &pb) != 0) return -1;
+    if (kick(o, up, A, ev, &ia, v1, w1) != 0 || kick(o, up, B, ev, &ib, v2, w2) != 0) return -1;
     return 0;
 }
 

@@ -38,6 +38,11 @@ export HOME="$tmp"        # never touch the real history
 
 pass() { passed=$((passed + 1)); }
 fail() { echo "FAIL $*"; failed=$((failed + 1)); }
+# same_bits NAME A B: the two runs' outputs exist and are byte for byte the same
+same_bits() {
+    if [ -s "$2" ] && cmp -s "$2" "$3"; then pass
+    else fail "$1"; diff "$2" "$3" | head -5; fi
+}
 
 if [ ! -x "$vroc" ]; then
     fail "scenes: no vroc in $build"
@@ -278,8 +283,7 @@ for sc in simple desks basketball office bounce random; do
         printf 'max_frames = 0\nread %s\nheap = 0\n' "$scenes/$sc.cmd"
         echo "step 150"; echo dump
     } | timeout 600 "$vroc" -q >"$tmp/$sc.heap0" 2>&1
-    if [ -s "$tmp/$sc.heap1" ] && cmp -s "$tmp/$sc.heap1" "$tmp/$sc.heap0"; then pass
-    else fail "${sc}_heap_on_and_off_give_the_same_bits"; diff "$tmp/$sc.heap1" "$tmp/$sc.heap0" | head -5; fi
+    same_bits "${sc}_heap_on_and_off_give_the_same_bits" "$tmp/$sc.heap1" "$tmp/$sc.heap0"
 done
 
 # ---- a crowded room: several impacts in one internal step ----
@@ -300,8 +304,7 @@ step 30
 dump'
 printf '%s\n' "$crowd" | timeout 300 "$vroc" -q >"$tmp/crowd.heap1" 2>&1
 printf 'heap = 0\n%s\n' "$crowd" | timeout 600 "$vroc" -q >"$tmp/crowd.heap0" 2>&1
-if [ -s "$tmp/crowd.heap1" ] && cmp -s "$tmp/crowd.heap1" "$tmp/crowd.heap0"; then pass
-else fail "a_crowded_room_gives_the_same_bits_heap_on_and_off"; diff "$tmp/crowd.heap1" "$tmp/crowd.heap0" | head -5; fi
+same_bits a_crowded_room_gives_the_same_bits_heap_on_and_off "$tmp/crowd.heap1" "$tmp/crowd.heap0"
 
 # ---- many responses at one instant: ties with a bisection's own start ----
 # past the 64 responses an instant, a bisection's event can be its bracket's
@@ -311,8 +314,7 @@ else fail "a_crowded_room_gives_the_same_bits_heap_on_and_off"; diff "$tmp/crowd
 data=$top/tests/data
 timeout 300 "$vroc" -q "$data/instant_chatter.cmd" >"$tmp/chatter.heap1" 2>&1
 { echo "heap = 0"; cat "$data/instant_chatter.cmd"; } | timeout 300 "$vroc" -q >"$tmp/chatter.heap0" 2>&1
-if [ -s "$tmp/chatter.heap1" ] && cmp -s "$tmp/chatter.heap1" "$tmp/chatter.heap0"; then pass
-else fail "a_chattering_instant_gives_the_same_bits_heap_on_and_off"; diff "$tmp/chatter.heap1" "$tmp/chatter.heap0" | head -5; fi
+same_bits a_chattering_instant_gives_the_same_bits_heap_on_and_off "$tmp/chatter.heap1" "$tmp/chatter.heap0"
 
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]
