@@ -12,6 +12,11 @@
 # one) and build/asan (-fsanitize=address,undefined).  The results are the
 # same bits as at -O2 (no fast-math: IEEE semantics kept); the peers'
 # 100-object scene takes 6.6 % fewer instructions and about 10 % less time.
+# build/rel also links with link-time optimisation, which inlines the small
+# functions one file calls in another (a body's pose, the walk's entry, the
+# distance bounds): the same bits again, 3 % fewer instructions and 3-10 %
+# more frames/s in that scene.  Its objects are fat (real code beside the
+# LTO code), so libvroc.a links into a program built without -flto too.
 # Sources are found by wildcard, so a new file in src/, shell/ or tests/
 # needs no edit here.
 
@@ -24,9 +29,10 @@ LIBS   = -lccd -lklu -llcm -ldl -lm
 RL_LIBS = -lreadline
 GL_LIBS = -lOSMesa
 
-rel_CFLAGS  = -O3 -g -fno-math-errno
+rel_OPT     = -O3 -g -fno-math-errno -flto=auto
+rel_CFLAGS  = $(rel_OPT) -ffat-lto-objects
 asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
-rel_LDFLAGS  =
+rel_LDFLAGS  = $(rel_OPT)
 asan_LDFLAGS = -fsanitize=address,undefined
 
 LIB_SRC    := $(filter-out src/render.c,$(wildcard src/*.c src/parallel/*.c))
