@@ -93,6 +93,57 @@ static int side_make(vrBoundSide *s, vrBody *b, const vrPose *pose, vec3 out, co
     return 1;
 }
 
+/* The plane bound of frozen box fz (pose pf) under body o (pose po, side
+ * so made with its motion): fz's face that best faces out (from fz toward
+ * o), and o's point lowest over its plane at te.  0 when fz is no box or
+ * the point is not over the face. */
+static int plane_make(vrPlaneBound *pl, const vrBody *fz, const vrPose *pf, vec3 out, const vrBody *o,
+                      const vrPose *po, const vrBoundSide *so)
+{
+    vec3 ob = mat33_tmulv(&pf->R, out), half = fz->shape.half, axis = vec3_zero(), nrm, x, r, w, u, acc, xb;
+    double e[3], c[3], h[3], room;
+    int k = 0, i;
+    if (fz->shape.kind != VR_SHAPE_BOX) return 0;
+    e[0] = ob.x, e[1] = ob.y, e[2] = ob.z;
+    for (i = 1; i < 3; i++)
+        if (fabs(e[i]) > fabs(e[k])) k = i;
+    if (k == 0) axis.x = e[0] < 0 ? -1 : 1;
+    else if (k == 1) axis.y = e[1] < 0 ? -1 : 1;
+    else axis.z = e[2] < 0 ? -1 : 1;
+    nrm = vrPose_rotate(pf, axis);
+    pl->floor = 0;
+    if (o->shape.kind == VR_SHAPE_SPHERE) {
+        x = po->p;
+        pl->floor = -o->shape.radius;
+    } else if (o->shape.kind == VR_SHAPE_BOX) {
+        vec3 down = mat33_tmulv(&po->R, nrm), v = o->shape.half;
+        x = vrPose_apply(po, vec3_make(down.x > 0 ? -v.x : v.x, down.y > 0 ? -v.y : v.y, down.z > 0 ? -v.z : v.z));
+    } else {
+        return 0;
+    }
+    w = vec3_zero();
+    if (vrBody_IsFree(o) && !constant_spin(o, &w)) return 0;
+    r = vec3_sub(x, po->p);
+    u = vec3_add(so->v, vec3_cross(w, r));
+    acc = vec3_add(so->a, vec3_cross(w, vec3_cross(w, r)));
+    /* the face is the plane n.x = half_k + n.p */
+    h[0] = half.x, h[1] = half.y, h[2] = half.z;
+    pl->h0 = vec3_dot(nrm, vec3_sub(x, pf->p)) - h[k] + pl->floor;
+    pl->h1 = vec3_dot(nrm, u);
+    pl->h2 = 0.5 * vec3_dot(nrm, acc);
+    pl->cubic = vec3_len2(w) * vec3_len(w) * vec3_len(r) / 6.0;
+    pl->move1 = vec3_len(u);
+    pl->move2 = 0.5 * vec3_len(acc);
+    /* how far inside the face's edges the point is, seen along the normal */
+    xb = mat33_tmulv(&pf->R, vec3_sub(x, pf->p));
+    c[0] = xb.x, c[1] = xb.y, c[2] = xb.z;
+    room = INFINITY;
+    for (i = 0; i < 3; i++)
+        if (i != k) room = vr_min(room, h[i] - fabs(c[i]));
+    pl->room = room - 1e-9;
+    return pl->room > 0;
+}
+
 void vrDistBound_MakeAlong(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrBody *B, const vrPose *pose_b,
                            double te, vec3 n, double lo, double hi)
 {
@@ -101,7 +152,8 @@ void vrDistBound_MakeAlong(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrB
     if (!(lo <= te && te <= hi)) return;
     db->te = te;
     db->gap0 = vec3_zero();
-    db->has_upper = 0;
+    db->shrink = 0;
+    db->has_upper = db->has_plane = 0;
     db->n = n;
     if (!side_make(&db->a, A, pose_a, n, NULL, te, lo, hi, &top_a)
         || !side_make(&db->b, B, pose_b, vec3_neg(n), NULL, te, lo, hi, &top_b))
@@ -110,21 +162,37 @@ void vrDistBound_MakeAlong(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrB
     db->valid = 1;
 }
 
+/* the point whose motion the upper bound carries: p, or a sphere's centre
+ * (its radius added to *shrink) */
+static vec3 witness(const vrBody *b, const vrPose *pose, vec3 p, double *shrink)
+{
+    if (b->shape.kind != VR_SHAPE_SPHERE) return p;
+    *shrink += b->shape.radius;
+    return pose->p;
+}
+
 void vrDistBound_Make(vrDistBound *db, vrBody *A, const vrPose *pose_a, vrBody *B, const vrPose *pose_b,
                       double te, vec3 pa, vec3 pb, int on_bodies, double lo, double hi)
 {
-    vec3 gap = vec3_sub(pb, pa);
+    vec3 gap = vec3_sub(pb, pa), wa, wb;
     double len = vec3_len(gap), top_a, top_b;
     db->valid = 0;
     if (!(len > 0) || !(lo <= te && te <= hi)) return;
     db->te = te;
-    db->gap0 = gap;
-    db->has_upper = on_bodies;
     db->n = vec3_scale(gap, 1.0 / len);
-    if (!side_make(&db->a, A, pose_a, db->n, &pa, te, lo, hi, &top_a)
-        || !side_make(&db->b, B, pose_b, vec3_neg(db->n), &pb, te, lo, hi, &top_b))
+    /* a sphere is as far from anything as its centre, less its radius:
+     * carrying the centre, the bound does not grow as the sphere slides */
+    db->shrink = 0;
+    wa = witness(A, pose_a, pa, &db->shrink);
+    wb = witness(B, pose_b, pb, &db->shrink);
+    db->gap0 = vec3_sub(wb, wa);
+    db->has_upper = on_bodies || (A->shape.kind == VR_SHAPE_SPHERE && B->shape.kind == VR_SHAPE_SPHERE);
+    if (!side_make(&db->a, A, pose_a, db->n, &wa, te, lo, hi, &top_a)
+        || !side_make(&db->b, B, pose_b, vec3_neg(db->n), &wb, te, lo, hi, &top_b))
         return;
     db->gap_n = -top_b - top_a;
+    db->has_plane = !vrBody_IsFree(A) ? plane_make(&db->plane, A, pose_a, db->n, B, pose_b, &db->b)
+                  : !vrBody_IsFree(B) ? plane_make(&db->plane, B, pose_b, vec3_neg(db->n), A, pose_a, &db->a) : 0;
     db->valid = 1;
 }
 
@@ -230,6 +298,15 @@ double vrDistBound_Clear(const vrDistBound *db, double d, double from, double un
     return db->te + tau;
 }
 
+/* Is the point's height over the face plane surely below level at tau,
+ * with the point surely over the face (so the bodies are no farther apart
+ * than that)? */
+static int under_level(const vrPlaneBound *pl, double tau, double level)
+{
+    double at = fabs(tau), cube = pl->cubic * at * at * at, h = pl->h0 + (pl->h1 + pl->h2 * tau) * tau;
+    return h + cube < level && h - cube >= pl->floor && (pl->move1 + pl->move2 * at) * at + cube <= pl->room;
+}
+
 int vrDistBound_Decide(const vrDistBound *db, double t, double d, double tol)
 {
     double tau = t - db->te, lower, upper;
@@ -238,11 +315,12 @@ int vrDistBound_Decide(const vrDistBound *db, double t, double d, double tol)
     /* the gap along n: the centres move exactly, the turning supports at most rise() */
     lower = lower_at(db, tau);
     if (lower > d + tol) return 0;
+    if (db->has_plane && under_level(&db->plane, tau, d - tol)) return 1;
     if (!db->has_upper) return -1;
     /* the witness points carried along: their distance is at least the bodies' */
     rel = vec3_madd(vec3_madd(db->gap0, tau, vec3_sub(db->b.u, db->a.u)), 0.5 * tau * tau,
                     vec3_sub(db->b.acc, db->a.acc));
-    upper = vec3_len(rel) + (db->a.jerk + db->b.jerk) * fabs(tau * tau * tau) / 6.0;
+    upper = vec3_len(rel) - db->shrink + (db->a.jerk + db->b.jerk) * fabs(tau * tau * tau) / 6.0;
     if (upper < d - tol) return 1;
     return -1;
 }

@@ -23,7 +23,14 @@
  *    from the centre;
  *  - upper bound: the distance between the material points pa and pb,
  *    carried by their bodies: the second-order Taylor polynomial of each,
- *    plus |omega|^3 |r| |tau|^3 / 6 for what it leaves out.
+ *    plus |omega|^3 |r| |tau|^3 / 6 for what it leaves out (a sphere's
+ *    point is its centre, less its radius);
+ *  - and when one body is a frozen box (a wall, a table top), the height
+ *    of the other's lowest point over the box's face toward it, carried
+ *    the same way, while that point stays over the face: a body sliding
+ *    along a wall keeps its distance to the wall's plane, where its
+ *    distance to a fixed point of the wall grows with the square of the
+ *    slide.
  * True spheres collide by their centres, so they count as not turning.
  * Bodies whose spin is not constant (two or three different moments of
  * inertia) or that meet the speed cap inside the window give no bounds.
@@ -47,13 +54,26 @@ typedef struct vrBoundSide {
     double g[VR_DISTBOUND_VERTS], s[VR_DISTBOUND_VERTS]; /* height below the support, rate along n */
 } vrBoundSide;
 
+/* a moving point's height over a frozen box's face plane, h0 + h1 tau +
+ * h2 tau^2 within cubic |tau|^3 (a sphere's centre: less its radius, and
+ * floor = -radius is as low as it may go); it stays over the face while it
+ * moves less than room, and it moves at most (move1 + move2 |tau|) |tau|
+ * + cubic |tau|^3 */
+typedef struct vrPlaneBound {
+    double h0, h1, h2, cubic, floor;
+    double move1, move2, room;
+} vrPlaneBound;
+
 typedef struct vrDistBound {
     int valid;
     double te;
     double gap_n;         /* gap between the supports along n at te */
     vec3 n;
-    vec3 gap0;            /* pb - pa at te */
+    vec3 gap0;            /* between the witness points at te: pa, pb, or a sphere's centre */
+    double shrink;        /* the radii of the spheres whose centres are witnesses */
     int has_upper;        /* pa and pb are points of the bodies */
+    int has_plane;        /* one body is a frozen box: plane bounds from above too */
+    vrPlaneBound plane;
     vrBoundSide a, b;
 } vrDistBound;
 

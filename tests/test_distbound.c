@@ -202,6 +202,90 @@ static int test_bounds_after_the_cap_follow_a_line(void)
     return 0;
 }
 
+/* A sphere or a turning cube sliding at 5 to 10 m/s over a static plate, 1
+ * to 5 mm above it: 2 ms later, still over the plate, the bounds decide
+ * that it is within 1 um above its distance (every sphere, most cubes:
+ * another vertex may come lowest).  The distance to the plate's point that
+ * was nearest grows with the square of the slide, by millimetres here, so
+ * only the plate's plane can tell.  Sliding off the plate's edge instead,
+ * the plane no longer bounds the distance: no threshold the body has not
+ * come within is ever decided. */
+static int test_bounds_follow_a_body_sliding_over_a_wall(void)
+{
+    int trial, n = 0, spheres = 0, decided = 0, spheres_decided = 0, crossed = 0;
+    vrFlight f;
+    f.accel = vec3_make(0, 0, -9.8);
+    f.max_linear = f.max_angular = 1e3;
+    for (trial = 0; trial < 400; trial++) {
+        vrBody a, b;
+        vrContact c, at;
+        vrDistBound db;
+        vrPose pa, pb;
+        double ang = 2 * VR_PI * uni(), speed = 5 + 5 * uni(), te = 0.01, t = te + 2e-3, gap = 0.001 + 0.004 * uni();
+        int leaving = trial % 2, sphere = trial % 4 < 2;
+        /* the plate is 0.8 x 0.6 m, its top at z = 0.05; a cube reaches 0.26 m from its centre */
+        vec3 x = leaving ? vec3_make(0.395, sym(0.1), 0.4) : vec3_make(sym(0.1), sym(0.02), 0.4);
+        vec3 v = leaving ? vec3_make(speed, 0, sym(0.1)) : vec3_make(speed * cos(ang), speed * sin(ang), sym(0.1));
+        make_body(&a, 1, sphere ? SPHERE : CUBE, 0);
+        make_body(&b, 2, PLATE, 1);
+        vrBody_Anchor(&b, 0, vec3_zero(), vec3_zero(), quat_identity(), vec3_zero(), &f);
+        vrBody_Anchor(&a, te, x, v, sphere ? quat_identity() : random_turn(), sphere ? vec3_zero() : rvec(0.1), &f);
+        /* lower it until the gap at te is as drawn */
+        measure(&a, &b, te, &c, &pa, &pb);
+        a.m.x0.z -= c.dist - gap;
+        a.pose_valid = 0;
+        measure(&a, &b, te, &c, &pa, &pb);
+        vrDistBound_Make(&db, &a, &pa, &b, &pb, te, c.pa, c.pb, 1, te, t);
+        ENSURE(db.valid && c.dist > 0 && (leaving || fabs(c.dist - gap) < 1e-9));
+        measure(&a, &b, t, &at, &pa, &pb);
+        if (at.dist <= 0) continue;   /* a corner turned into the plate */
+        crossed += vrDistBound_Decide(&db, t, at.dist - 1e-9, 1e-14) == 1;
+        if (leaving) continue;
+        n++;
+        spheres += sphere;
+        decided += vrDistBound_Decide(&db, t, at.dist + 1e-6, 1e-12) == 1;
+        spheres_decided += sphere && vrDistBound_Decide(&db, t, at.dist + 1e-6, 1e-12) == 1;
+    }
+    printf("    %d slides over the plate: %d decided (%d of %d spheres); %d crossings\n", n, decided,
+           spheres_decided, spheres, crossed);
+    ENSURE(crossed == 0);
+    ENSURE(n > 150 && spheres_decided == spheres && decided > 3 * n / 4);
+    return 0;
+}
+
+/* A sphere passing another at 10 m/s, 2 mm apart: the distance is that of
+ * the centres less the radii, which grows with the square of the pass
+ * only as the centres' distance does; the surface points that were
+ * nearest drift 1 cm apart in 1 ms.  The bounds follow the centres. */
+static int test_bounds_follow_a_sphere_passing_a_sphere(void)
+{
+    vrBody a, b;
+    vrFlight f;
+    vrContact c, at;
+    vrDistBound db;
+    vrPose pa, pb;
+    int k, decided = 0, crossed = 0;
+    f.accel = vec3_zero();
+    f.max_linear = f.max_angular = 1e3;
+    make_body(&a, 1, SPHERE, 0);
+    make_body(&b, 2, SPHERE, 1);
+    vrBody_Anchor(&b, 0, vec3_zero(), vec3_zero(), quat_identity(), vec3_zero(), &f);
+    vrBody_Anchor(&a, 0, vec3_make(-0.01, 0, a.shape.radius + b.shape.radius + 0.002), vec3_make(10, 0, 0),
+                  quat_identity(), vec3_zero(), &f);
+    measure(&a, &b, 1e-3, &c, &pa, &pb);
+    vrDistBound_Make(&db, &a, &pa, &b, &pb, 1e-3, c.pa, c.pb, 1, 0, 2e-3);
+    ENSURE(db.valid && fabs(c.dist - 0.002) < 1e-12);
+    for (k = 0; k <= 20; k++) {
+        double t = 1e-4 * k;
+        measure(&a, &b, t, &at, &pa, &pb);
+        decided += vrDistBound_Decide(&db, t, at.dist + 1e-6, 1e-12) == 1;
+        crossed += vrDistBound_Decide(&db, t, at.dist, 1e-14) >= 0;
+    }
+    printf("    %d of 21 times decided, %d crossings\n", decided, crossed);
+    ENSURE(decided == 21 && crossed == 0);
+    return 0;
+}
+
 /* The schedule's key (schedule.c): conservative advancement on the lower
  * bound along the measured direction, for pairs 1 mm to 5 cm apart closing
  * at up to 30 m/s with spins to 115 rad/s, the envelope d half the gap.
@@ -336,6 +420,8 @@ int main(int argc, char **argv)
     RUN_TEST(test_bounds_decide_near_the_measurement);
     RUN_TEST(test_bounds_follow_the_vertex_that_overtakes);
     RUN_TEST(test_bounds_after_the_cap_follow_a_line);
+    RUN_TEST(test_bounds_follow_a_body_sliding_over_a_wall);
+    RUN_TEST(test_bounds_follow_a_sphere_passing_a_sphere);
     RUN_TEST(test_no_bounds_for_tumbling_or_capped_motion);
     RUN_TEST(test_clear_never_passes_the_envelope);
     RUN_TEST(test_a_box_reaches_as_far_as_its_vertices);
