@@ -71,7 +71,7 @@ typedef struct vrDistBound {
     vec3 n;
     vec3 gap0;            /* between the witness points at te: pa, pb, or a sphere's centre */
     double shrink;        /* the radii of the spheres whose centres are witnesses */
-    int has_upper;        /* pa and pb are points of the bodies */
+    int has_upper;        /* the witnesses are points of the bodies (or two spheres' centres) */
     int has_plane;        /* one body is a frozen box: plane bounds from above too */
     vrPlaneBound plane;
     vrBoundSide a, b;
