@@ -289,14 +289,15 @@ static void ahead_line(const vrAhead *f, int at, int k, double *g, double *s, do
 
 /* how long the gap (base + closing tau + half_accel tau^2) stays above the
  * rises of a and b, each taken as its lines or (ha, hb) as its headroom:
- * the first time any line of one plus any of the other reaches it */
+ * the first time any line of one plus any of the other reaches it (or
+ * any time not after `known`, once it is clear it will be no later) */
 static double clear_of(const vrAhead *a, int ha, const vrAhead *b, int hb, double base, double closing,
-                       double half_accel, double from)
+                       double half_accel, double from, double known)
 {
     int na = ha || a->n <= 0 ? 1 : a->n, nb = hb || b->n <= 0 ? 1 : b->n, i, j;
     double t = INFINITY;
     for (i = 0; i < na; i++)
-        for (j = 0; j < nb; j++) {
+        for (j = 0; j < nb && t > known; j++) {
             double ga, sa, qa, gb, sb, qb;
             ahead_line(a, ha, i, &ga, &sa, &qa);
             ahead_line(b, hb, j, &gb, &sb, &qb);
@@ -327,9 +328,9 @@ double vrDistBound_Clear(const vrDistBound *db, double d, double from, double un
     ahead_of(&db->b, &fb);
     for (it = 0; it < 4; it++) {
         t = tau;
-        for (ha = 0; ha <= (fa.n != 0); ha++)
-            for (hb = 0; hb <= (fb.n != 0); hb++)
-                t = vr_max(t, clear_of(&fa, ha, &fb, hb, base, closing, half_accel, tau));
+        for (ha = fa.n != 0; ha >= 0; ha--)   /* the headrooms first: one root, often the latest */
+            for (hb = fb.n != 0; hb >= 0; hb--)
+                t = vr_max(t, clear_of(&fa, ha, &fb, hb, base, closing, half_accel, tau, t));
         if (t >= span) return until;
         /* a pair of lines that dipped to d and rose again ended it early:
          * on from there while the bound is clearly above d */
