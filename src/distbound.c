@@ -100,17 +100,13 @@ static int side_make(vrBoundSide *s, vrBody *b, const vrPose *pose, vec3 out, co
 static int plane_make(vrPlaneBound *pl, const vrBody *fz, const vrPose *pf, vec3 out, const vrBody *o,
                       const vrPose *po, const vrBoundSide *so)
 {
-    vec3 ob = mat33_tmulv(&pf->R, out), half = fz->shape.half, axis = vec3_zero(), nrm, x, r, w, u, acc, xb;
-    double e[3], c[3], h[3], room;
+    vec3 ob = mat33_tmulv(&pf->R, out), half = fz->shape.half, nrm, x, r, w, u, acc, xb;
+    double room;
     int k = 0, i;
     if (fz->shape.kind != VR_SHAPE_BOX) return 0;
-    e[0] = ob.x, e[1] = ob.y, e[2] = ob.z;
-    for (i = 1; i < 3; i++)
-        if (fabs(e[i]) > fabs(e[k])) k = i;
-    if (k == 0) axis.x = e[0] < 0 ? -1 : 1;
-    else if (k == 1) axis.y = e[1] < 0 ? -1 : 1;
-    else axis.z = e[2] < 0 ? -1 : 1;
-    nrm = vrPose_rotate(pf, axis);
+    for (i = 1; i < 3; i++)   /* the face: the body axis nearest out */
+        if (fabs(vec3_get(ob, i)) > fabs(vec3_get(ob, k))) k = i;
+    nrm = vec3_scale(mat33_col(&pf->R, k), vec3_get(ob, k) < 0 ? -1 : 1);
     pl->floor = 0;
     if (o->shape.kind == VR_SHAPE_SPHERE) {
         x = po->p;
@@ -127,8 +123,7 @@ static int plane_make(vrPlaneBound *pl, const vrBody *fz, const vrPose *pf, vec3
     u = vec3_add(so->v, vec3_cross(w, r));
     acc = vec3_add(so->a, vec3_cross(w, vec3_cross(w, r)));
     /* the face is the plane n.x = half_k + n.p */
-    h[0] = half.x, h[1] = half.y, h[2] = half.z;
-    pl->h0 = vec3_dot(nrm, vec3_sub(x, pf->p)) - h[k] + pl->floor;
+    pl->h0 = vec3_dot(nrm, vec3_sub(x, pf->p)) - vec3_get(half, k) + pl->floor;
     pl->h1 = vec3_dot(nrm, u);
     pl->h2 = 0.5 * vec3_dot(nrm, acc);
     pl->cubic = vec3_len2(w) * vec3_len(w) * vec3_len(r) / 6.0;
@@ -136,10 +131,9 @@ static int plane_make(vrPlaneBound *pl, const vrBody *fz, const vrPose *pf, vec3
     pl->move2 = 0.5 * vec3_len(acc);
     /* how far inside the face's edges the point is, seen along the normal */
     xb = mat33_tmulv(&pf->R, vec3_sub(x, pf->p));
-    c[0] = xb.x, c[1] = xb.y, c[2] = xb.z;
     room = INFINITY;
     for (i = 0; i < 3; i++)
-        if (i != k) room = vr_min(room, h[i] - fabs(c[i]));
+        if (i != k) room = vr_min(room, vec3_get(half, i) - fabs(vec3_get(xb, i)));
     pl->room = room - 1e-9;
     return pl->room > 0;
 }
@@ -224,12 +218,12 @@ static double lower_at(const vrDistBound *db, double tau)
 }
 
 /* A side looking forward only (tau >= 0): the lines that can be the
- * highest there, the turn term's coefficient, the steepest rise rate, and
- * the cap. */
+ * highest there (none: it does not turn; too many vertices: the one line
+ * |omega| R tau), the turn term's coefficient, and the cap. */
 typedef struct vrAhead {
-    int n;                   /* -1: |omega| R tau */
+    int n;
     double g[VR_DISTBOUND_VERTS], s[VR_DISTBOUND_VERTS];
-    double turn, steepest, headroom;
+    double turn, headroom;
 } vrAhead;
 
 static void ahead_of(const vrBoundSide *side, vrAhead *f)
@@ -237,12 +231,12 @@ static void ahead_of(const vrBoundSide *side, vrAhead *f)
     int i, top;
     f->n = 0;
     f->turn = 0.5 * side->w_len * side->w_len * side->r_out;
-    f->steepest = 0;
     f->headroom = side->headroom;
     if (side->w_len == 0) return;
     if (side->nv < 0) {
-        f->n = -1;
-        f->steepest = side->w_len * side->r_out;
+        f->n = 1;
+        f->g[0] = 0;
+        f->s[0] = side->w_len * side->r_out;
         return;
     }
     /* the top line at 0 (of those, the steepest) stays on the envelope until
@@ -253,7 +247,6 @@ static void ahead_of(const vrBoundSide *side, vrAhead *f)
         if (i != top && side->s[i] <= side->s[top]) continue;
         f->g[f->n] = side->g[i];
         f->s[f->n] = side->s[i];
-        if (side->s[i] > f->steepest) f->steepest = side->s[i];
         f->n++;
     }
 }
@@ -277,13 +270,12 @@ static double first_down(double a, double b, double c, double from)
     return from < r2 ? r2 : from;                                     /* above 0 between them */
 }
 
-/* line k of a side looking ahead, g + s tau + turn tau^2, or (at = 1) its
- * headroom, the most it can ever rise */
+/* line k of a side looking ahead, g + s tau + turn tau^2 (0 for a side
+ * that does not turn), or (at = 1) its headroom, the most it can ever rise */
 static void ahead_line(const vrAhead *f, int at, int k, double *g, double *s, double *turn)
 {
     *g = *s = *turn = 0;
     if (at) *g = f->headroom;
-    else if (f->n < 0) *s = f->steepest, *turn = f->turn;
     else if (f->n > 0) *g = f->g[k], *s = f->s[k], *turn = f->turn;
 }
 
@@ -294,7 +286,7 @@ static void ahead_line(const vrAhead *f, int at, int k, double *g, double *s, do
 static double clear_of(const vrAhead *a, int ha, const vrAhead *b, int hb, double base, double closing,
                        double half_accel, double from, double known)
 {
-    int na = ha || a->n <= 0 ? 1 : a->n, nb = hb || b->n <= 0 ? 1 : b->n, i, j;
+    int na = ha || a->n == 0 ? 1 : a->n, nb = hb || b->n == 0 ? 1 : b->n, i, j;
     double t = INFINITY;
     for (i = 0; i < na; i++)
         for (j = 0; j < nb && t > known; j++) {
