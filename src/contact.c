@@ -990,7 +990,43 @@ vec3 vrShape_Support(const vrShape *s, const vrPose *p, vec3 dir)
     return vrPose_apply(p, s->poly->vert[best]);
 }
 
-/* Andrew's monotone chain, then edge tests */
+/* Does p[0..n) go once round a convex polygon counter-clockwise, every
+ * corner turning left by more than rounding (sine above TURN_MIN), all
+ * seen from p[0] in order within half a turn (left turns alone also let a
+ * star go round twice)?  A region made by region_points does, in one
+ * sense or the other; its hull is then itself, as the monotone chain
+ * would find it, and the edge tests give the same bits. */
+#define TURN_MIN 1e-9
+
+static int strictly_convex(const vrP2 *p, int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        vrP2 a = p[i], b = p[(i + 1) % n], c = p[(i + 2) % n];
+        double ab2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
+        double bc2 = (c.x - b.x) * (c.x - b.x) + (c.y - b.y) * (c.y - b.y), turn = cross2(a, b, c);
+        if (!(turn > 0 && turn * turn > TURN_MIN * TURN_MIN * ab2 * bc2)) return 0;
+    }
+    for (i = 2; i < n; i++)      /* left of p[0]->p[1], and turning on: within half a turn */
+        if (!(cross2(p[0], p[1], p[i]) > 0 && cross2(p[0], p[i - 1], p[i]) > 0)) return 0;
+    return 1;
+}
+
+/* how far the origin lies inside convex counter-clockwise polygon h */
+static double inside_by(const vrP2 *h, int k)
+{
+    double margin = INFINITY;
+    int i;
+    for (i = 0; i < k; i++) {
+        vrP2 a = h[i], b = h[(i + 1) % k], o = {0, 0};
+        double len = hypot(b.x - a.x, b.y - a.y);
+        if (len > 0 && cross2(a, b, o) / len < margin) margin = cross2(a, b, o) / len;
+    }
+    return margin;
+}
+
+/* a contact region as it is (convex, in order), else Andrew's monotone
+ * chain first; then edge tests */
 double vrRegion_Margin(const vec3 *pts, int n, vec3 nrm, vec3 q)
 {
     vec3 t1 = vec3_orthogonal(nrm), t2 = vec3_cross(nrm, t1);
@@ -1011,6 +1047,11 @@ double vrRegion_Margin(const vec3 *pts, int n, vec3 nrm, vec3 q)
         p[i].x = vec3_dot(d, t1);
         p[i].y = vec3_dot(d, t2);
     }
+    if (n >= 3 && n <= VR_REGION_MAX) {
+        if (strictly_convex(p, n)) return inside_by(p, n);
+        for (i = 0; i < n; i++) h[i] = p[n - 1 - i];     /* the other sense */
+        if (strictly_convex(h, n)) return inside_by(h, n);
+    }
     qsort(p, (size_t)n, sizeof *p, cmp_p2);
     for (i = 0; i < n; i++) {
         while (k >= 2 && cross2(h[k - 2], h[k - 1], p[i]) <= 0) k--;
@@ -1023,11 +1064,7 @@ double vrRegion_Margin(const vec3 *pts, int n, vec3 nrm, vec3 q)
     if (k > 1) k--;                                /* the last point repeats the first */
     if (k == 1) margin = -hypot(h[0].x, h[0].y);
     else if (k == 2) margin = -seg_dist(h[0], h[1]);
-    for (i = 0; k > 2 && i < k; i++) {
-        vrP2 a = h[i], b = h[(i + 1) % k], o = {0, 0};
-        double len = hypot(b.x - a.x, b.y - a.y);
-        if (len > 0 && cross2(a, b, o) / len < margin) margin = cross2(a, b, o) / len;
-    }
+    if (k > 2) margin = inside_by(h, k);
     if (p != small) free(p);
     if (h != hsmall) free(h);
     return margin;

@@ -861,6 +861,78 @@ static int test_contact_is_robust_on_thin_large_and_touching_shapes(void)
     return 0;
 }
 
+/* ---- how far a point lies inside a region (SPEC 3.1's support test) ---- */
+
+/* the polygon's own signed distances, in 3D: min over its edges of how far
+ * q lies on the inner side, the sense taken from the polygon's area */
+static double margin_3d(const vec3 *p, int n, vec3 q)
+{
+    vec3 c = vec3_zero(), area = vec3_zero();
+    double m = INFINITY;
+    int i;
+    for (i = 0; i < n; i++) c = vec3_add(c, vec3_scale(p[i], 1.0 / n));
+    for (i = 0; i < n; i++) area = vec3_add(area, vec3_cross(vec3_sub(p[i], c), vec3_sub(p[(i + 1) % n], c)));
+    area = vec3_normalize(area);
+    for (i = 0; i < n; i++) {
+        vec3 e = vec3_sub(p[(i + 1) % n], p[i]);
+        double s = vec3_dot(vec3_cross(e, vec3_sub(q, p[i])), area) / vec3_len(e);
+        if (s < m) m = s;
+    }
+    return m;
+}
+
+/* A region made by the contact code is a convex polygon in order, in one
+ * sense or the other, and is measured as it is; any other list of points
+ * is hulled first.  2,000 random convex polygons (3 to VR_REGION_MAX
+ * corners on an ellipse, in a random plane, q in and around them): in
+ * either sense and shuffled, the same bits, and the polygon's own signed
+ * distances; seen along the other normal, or with a point added mid-edge
+ * (hulled away), the same to rounding. */
+static int test_region_margin_is_the_same_in_either_sense_or_order(void)
+{
+    int trial, i, fast_used = 0;
+    for (trial = 0; trial < 2000; trial++) {
+        int n = 3 + (int)(rnd01() * (VR_REGION_MAX - 2)), k;
+        vec3 nrm = rnd_unit(), t1 = vec3_orthogonal(nrm), t2 = vec3_cross(nrm, t1), o = rnd_unit();
+        vec3 ccw[VR_REGION_MAX], cw[VR_REGION_MAX], mixed[VR_REGION_MAX + 1], q;
+        double ang[VR_REGION_MAX], ra = rnd(0.01, 1), rb = rnd(0.01, 1), m_ccw, m_cw, m_mixed, m_extra, want;
+        for (i = 0; i < n; i++) ang[i] = rnd(0, 2 * VR_PI);
+        for (i = 1; i < n; i++)             /* sorted: counter-clockwise about nrm */
+            for (k = i; k > 0 && ang[k] < ang[k - 1]; k--) {
+                double x = ang[k]; ang[k] = ang[k - 1]; ang[k - 1] = x;
+            }
+        for (i = 0; i < n; i++)
+            ccw[i] = vec3_add(o, vec3_add(vec3_scale(t1, ra * cos(ang[i])), vec3_scale(t2, rb * sin(ang[i]))));
+        for (i = 0; i < n; i++) cw[i] = mixed[i] = ccw[n - 1 - i];
+        for (i = n - 1; i > 0; i--) {
+            int j = (int)(rnd01() * (i + 1));
+            vec3 x = mixed[i]; mixed[i] = mixed[j]; mixed[j] = x;
+        }
+        q = vec3_add(o, vec3_add(vec3_scale(t1, rnd(-1.2, 1.2) * ra), vec3_scale(t2, rnd(-1.2, 1.2) * rb)));
+        q = vec3_madd(q, rnd(-0.01, 0.01), nrm);           /* off the plane: seen along nrm */
+        m_ccw = vrRegion_Margin(ccw, n, nrm, q);
+        m_cw = vrRegion_Margin(cw, n, nrm, q);
+        m_mixed = vrRegion_Margin(mixed, n, nrm, q);
+        want = margin_3d(ccw, n, vec3_madd(q, -vec3_dot(vec3_sub(q, o), nrm), nrm));
+        if (m_ccw != m_mixed || m_cw != m_mixed) {
+            printf("    trial %d, %d corners: %.17g (in order), %.17g (other sense), %.17g (shuffled)\n", trial, n, m_ccw,
+                   m_cw, m_mixed);
+            return 1;
+        }
+        if (!(fabs(m_ccw - want) <= 1e-12)) {
+            printf("    trial %d, %d corners: %.17g, its own edges say %.17g\n", trial, n, m_ccw, want);
+            return 1;
+        }
+        ENSURE(fabs(vrRegion_Margin(ccw, n, vec3_neg(nrm), q) - m_ccw) <= 1e-12);   /* seen from below */
+        mixed[n] = vec3_lerp(ccw[0], ccw[1], rnd(0.2, 0.8));  /* mid-edge: hulled away */
+        m_extra = vrRegion_Margin(mixed, n + 1, nrm, q);
+        ENSURE(fabs(m_extra - m_ccw) <= 1e-12);
+        fast_used += n >= 4;
+    }
+    ENSURE(fast_used > 1000);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     test_init(argc, argv);
@@ -885,5 +957,6 @@ int main(int argc, char **argv)
     RUN_TEST(test_a_box_in_a_walls_corner_is_pushed_out_of_the_wall);
     RUN_TEST(test_contact_is_robust_on_thin_large_and_touching_shapes);
     RUN_TEST(test_shapes_that_touch_exactly_get_the_face_normal_and_region);
+    RUN_TEST(test_region_margin_is_the_same_in_either_sense_or_order);
     return test_summary();
 }
