@@ -18,7 +18,10 @@ typedef struct vrImpactBody {
 } vrImpactBody;
 
 /* the solve's statistics, SPEC 1.3 klu_solves / klu_refactors / klu_factors */
-typedef struct vrResponseStats { long long solves, refactors, factors; } vrResponseStats;
+typedef struct vrResponseStats {
+    long long solves, refactors, factors;
+    long long refined;            /* solves that took a step of iterative refinement */
+} vrResponseStats;
 
 vrResponder *vrResponder_Create(void);
 void vrResponder_Free(vrResponder *r);
