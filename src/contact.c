@@ -460,13 +460,20 @@ static void p2_sort(P2 *p, int n)
     }
 }
 
+/* a and b lie more than DEDUP_EPS apart (squared: a root is slow) */
+static int p2_apart(P2 a, P2 b)
+{
+    P2 d = p2_sub(a, b);
+    return p2_dot(d, d) > DEDUP_EPS * DEDUP_EPS;
+}
+
 /* drop points within DEDUP_EPS of their predecessor (cyclically) */
 static int p2_dedup(P2 *p, int n)
 {
     int i, m = 0;
     for (i = 0; i < n; i++)
-        if (m == 0 || p2_len(p2_sub(p[i], p[m - 1])) > DEDUP_EPS) p[m++] = p[i];
-    while (m > 1 && p2_len(p2_sub(p[m - 1], p[0])) <= DEDUP_EPS) m--;
+        if (m == 0 || p2_apart(p[i], p[m - 1])) p[m++] = p[i];
+    while (m > 1 && !p2_apart(p[m - 1], p[0])) m--;
     return m;
 }
 
