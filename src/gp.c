@@ -1210,9 +1210,10 @@ static int quiet_support(vrOwner *o, const vrPair *p, double t, double until, co
 
 /* How far ahead of t an inside pair with no event at t is proved quiet:
  * to the frame's end, and then QUIET_AHEAD seconds past it when the proof
- * holds that far (a box or a ball sliding across a table, or a vase
- * spinning on the floor, would otherwise be looked at again at the start
- * of every frame: in Office's last 300 frames, a third of the work).
+ * holds that far (a box or a ball sliding across a table would otherwise
+ * be looked at again at the start of every frame: in Office, a tenth of
+ * heap on's instructions; longer or shorter horizons, or tries at a part
+ * of the frame when the whole fails, cost more than they saved there).
  * -INFINITY when not quiet.  Nothing at a frame's end needs the pair
  * looked at: rest and support are decided from the bodies' states, and
  * whatever changes either body flags the pair. */
