@@ -1026,7 +1026,7 @@ static double inside_by(const vrP2 *h, int k)
     int i;
     for (i = 0; i < k; i++) {
         vrP2 a = h[i], b = h[(i + 1) % k], o = {0, 0};
-        double len = hypot(b.x - a.x, b.y - a.y);
+        double ex = b.x - a.x, ey = b.y - a.y, len = sqrt(ex * ex + ey * ey);   /* not hypot: no overflow here, and a call */
         if (len > 0 && cross2(a, b, o) / len < margin) margin = cross2(a, b, o) / len;
     }
     return margin;
