@@ -803,12 +803,18 @@ static void approach(vrOwner *o, const vrPair *p, double t, const vrPose *pa, co
                      const vrContact *c, vrApproach *ap)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
-    vec3 sum = vec3_zero(), all = vec3_zero();
+    vec3 sum = vec3_zero(), all = vec3_zero(), va, vb;
+    vec3 wa = vrBody_Omega(A, pa), wb = vrBody_Omega(B, pb);   /* once, not per point */
     int i, ties = 0;
+    vrBody_Velocity(A, t, &va);
+    vrBody_Velocity(B, t, &vb);
     ap->umin = INFINITY;
     ap->umax = -INFINITY;
     for (i = 0; i < c->npoints; i++) {
-        vec3 u = vec3_sub(vrBody_PointVelocity(B, t, pb, c->point[i]), vrBody_PointVelocity(A, t, pa, c->point[i]));
+        /* vrBody_PointVelocity's sums, the body's motion taken out of the loop */
+        vec3 ua = vec3_add(va, vec3_cross(wa, vec3_sub(c->point[i], pa->p)));
+        vec3 ub = vec3_add(vb, vec3_cross(wb, vec3_sub(c->point[i], pb->p)));
+        vec3 u = vec3_sub(ub, ua);
         ap->u[i] = vec3_dot(c->n, u);
         if (ap->u[i] < ap->umin) ap->umin = ap->u[i];
         if (ap->u[i] > ap->umax) ap->umax = ap->u[i];
