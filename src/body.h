@@ -111,6 +111,12 @@ void vrBody_Velocity(const vrBody *b, double t, vec3 *v);
 vec3 vrBody_Omega(const vrBody *b, const vrPose *pose);
 /* velocity of the material point p (world) given the pose at t */
 vec3 vrBody_PointVelocity(const vrBody *b, double t, const vrPose *pose, vec3 p);
+/* the same from the body's velocity v and spin w (taken once for many
+ * points), its centre at c */
+static inline vec3 vrRigid_PointVelocity(vec3 v, vec3 w, vec3 c, vec3 p)
+{
+    return vec3_add(v, vec3_cross(w, vec3_sub(p, c)));
+}
 /* world inverse inertia at the pose */
 mat33 vrBody_InvInertiaWorld(const vrBody *b, const vrPose *pose);
 mat33 vrBody_InertiaWorld(const vrBody *b, const vrPose *pose);

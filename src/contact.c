@@ -449,6 +449,8 @@ static double p2_dot(P2 a, P2 b) { return a.x * b.x + a.y * b.y; }
 static double p2_len(P2 a) { return sqrt(p2_dot(a, a)); }
 
 static int p2_less(P2 a, P2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+/* twice the signed area of o, a, b: > 0 when they turn left */
+static double p2_turn(P2 o, P2 a, P2 b) { return p2_cross(p2_sub(a, o), p2_sub(b, o)); }
 
 static void p2_sort(P2 *p, int n)
 {
@@ -486,11 +488,11 @@ static int hull2d(P2 *p, int n, P2 *tmp)
     n = p2_dedup(p, n);
     if (n < 3) return n;
     for (i = 0; i < n; i++) {
-        while (k >= 2 && p2_cross(p2_sub(tmp[k - 1], tmp[k - 2]), p2_sub(p[i], tmp[k - 2])) <= 0) k--;
+        while (k >= 2 && p2_turn(tmp[k - 2], tmp[k - 1], p[i]) <= 0) k--;
         tmp[k++] = p[i];
     }
     for (i = n - 2, lower = k + 1; i >= 0; i--) {
-        while (k >= lower && p2_cross(p2_sub(tmp[k - 1], tmp[k - 2]), p2_sub(p[i], tmp[k - 2])) <= 0) k--;
+        while (k >= lower && p2_turn(tmp[k - 2], tmp[k - 1], p[i]) <= 0) k--;
         tmp[k++] = p[i];
     }
     k--; /* the first point closes the loop */
@@ -960,18 +962,14 @@ static int contact(const vrShape *a, const vrPose *pa, const vrShape *b, const v
 
 /* ---- support containment (SPEC 3.1) ------------------------------------- */
 
-typedef struct { double x, y; } vrP2;
-
 static int cmp_p2(const void *a, const void *b)
 {
-    const vrP2 *p = a, *q = b;
-    return p->x < q->x ? -1 : p->x > q->x ? 1 : p->y < q->y ? -1 : p->y > q->y;
+    const P2 *p = a, *q = b;
+    return p2_less(*p, *q) ? -1 : p2_less(*q, *p);
 }
 
-static double cross2(vrP2 o, vrP2 a, vrP2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
-
 /* distance from the origin to segment ab */
-static double seg_dist(vrP2 a, vrP2 b)
+static double seg_dist(P2 a, P2 b)
 {
     double ex = b.x - a.x, ey = b.y - a.y, l2 = ex * ex + ey * ey;
     double s = l2 > 0 ? -(a.x * ex + a.y * ey) / l2 : 0;
@@ -1005,29 +1003,30 @@ vec3 vrShape_Support(const vrShape *s, const vrPose *p, vec3 dir)
  * would find it, and the edge tests give the same bits. */
 #define TURN_MIN 1e-9
 
-static int strictly_convex(const vrP2 *p, int n)
+static int strictly_convex(const P2 *p, int n)
 {
     int i;
     for (i = 0; i < n; i++) {
-        vrP2 a = p[i], b = p[(i + 1) % n], c = p[(i + 2) % n];
-        double ab2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
-        double bc2 = (c.x - b.x) * (c.x - b.x) + (c.y - b.y) * (c.y - b.y), turn = cross2(a, b, c);
-        if (!(turn > 0 && turn * turn > TURN_MIN * TURN_MIN * ab2 * bc2)) return 0;
+        P2 a = p[i], b = p[(i + 1) % n], c = p[(i + 2) % n], ab = p2_sub(b, a), bc = p2_sub(c, b);
+        double turn = p2_turn(a, b, c);
+        if (!(turn > 0 && turn * turn > TURN_MIN * TURN_MIN * p2_dot(ab, ab) * p2_dot(bc, bc))) return 0;
     }
     for (i = 2; i < n; i++)      /* left of p[0]->p[1], and turning on: within half a turn */
-        if (!(cross2(p[0], p[1], p[i]) > 0 && cross2(p[0], p[i - 1], p[i]) > 0)) return 0;
+        if (!(p2_turn(p[0], p[1], p[i]) > 0 && p2_turn(p[0], p[i - 1], p[i]) > 0)) return 0;
     return 1;
 }
 
 /* how far the origin lies inside convex counter-clockwise polygon h */
-static double inside_by(const vrP2 *h, int k)
+static double inside_by(const P2 *h, int k)
 {
     double margin = INFINITY;
     int i;
     for (i = 0; i < k; i++) {
-        vrP2 a = h[i], b = h[(i + 1) % k], o = {0, 0};
-        double ex = b.x - a.x, ey = b.y - a.y, len = sqrt(ex * ex + ey * ey);   /* not hypot: no overflow here, and a call */
-        if (len > 0 && cross2(a, b, o) / len < margin) margin = cross2(a, b, o) / len;
+        P2 a = h[i], b = h[(i + 1) % k];
+        double len = p2_len(p2_sub(b, a)), in;
+        if (!(len > 0)) continue;
+        in = p2_turn(a, b, p2(0, 0)) / len;
+        if (in < margin) margin = in;
     }
     return margin;
 }
@@ -1037,7 +1036,7 @@ static double inside_by(const vrP2 *h, int k)
 double vrRegion_Margin(const vec3 *pts, int n, vec3 nrm, vec3 q)
 {
     vec3 t1 = vec3_orthogonal(nrm), t2 = vec3_cross(nrm, t1);
-    vrP2 small[VR_REGION_MAX], hsmall[2 * VR_REGION_MAX], *p = small, *h = hsmall;
+    P2 small[VR_REGION_MAX], hsmall[2 * VR_REGION_MAX], *p = small, *h = hsmall;
     int i, k = 0, lower;
     double margin = INFINITY;
     if (n > VR_REGION_MAX) {       /* several supports' regions together */
@@ -1061,11 +1060,11 @@ double vrRegion_Margin(const vec3 *pts, int n, vec3 nrm, vec3 q)
     }
     qsort(p, (size_t)n, sizeof *p, cmp_p2);
     for (i = 0; i < n; i++) {
-        while (k >= 2 && cross2(h[k - 2], h[k - 1], p[i]) <= 0) k--;
+        while (k >= 2 && p2_turn(h[k - 2], h[k - 1], p[i]) <= 0) k--;
         h[k++] = p[i];
     }
     for (i = n - 2, lower = k + 1; i >= 0; i--) {
-        while (k >= lower && cross2(h[k - 2], h[k - 1], p[i]) <= 0) k--;
+        while (k >= lower && p2_turn(h[k - 2], h[k - 1], p[i]) <= 0) k--;
         h[k++] = p[i];
     }
     if (k > 1) k--;                                /* the last point repeats the first */

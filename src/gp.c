@@ -811,10 +811,8 @@ static void approach(vrOwner *o, const vrPair *p, double t, const vrPose *pa, co
     ap->umin = INFINITY;
     ap->umax = -INFINITY;
     for (i = 0; i < c->npoints; i++) {
-        /* vrBody_PointVelocity's sums, the body's motion taken out of the loop */
-        vec3 ua = vec3_add(va, vec3_cross(wa, vec3_sub(c->point[i], pa->p)));
-        vec3 ub = vec3_add(vb, vec3_cross(wb, vec3_sub(c->point[i], pb->p)));
-        vec3 u = vec3_sub(ub, ua);
+        vec3 u = vec3_sub(vrRigid_PointVelocity(vb, wb, pb->p, c->point[i]),
+                          vrRigid_PointVelocity(va, wa, pa->p, c->point[i]));
         ap->u[i] = vec3_dot(c->n, u);
         if (ap->u[i] < ap->umin) ap->umin = ap->u[i];
         if (ap->u[i] > ap->umax) ap->umax = ap->u[i];

@@ -416,7 +416,7 @@ vec3 vrBody_PointVelocity(const vrBody *b, double t, const vrPose *pose, vec3 p)
 {
     vec3 v;
     vrBody_Velocity(b, t, &v);
-    return vec3_add(v, vec3_cross(vrBody_Omega(b, pose), vec3_sub(p, pose->p)));
+    return vrRigid_PointVelocity(v, vrBody_Omega(b, pose), pose->p, p);
 }
 
 mat33 vrBody_InvInertiaWorld(const vrBody *b, const vrPose *pose)
