@@ -10,21 +10,24 @@
 # Two variants share the rules below: build/rel (-O3, and no errno from
 # math functions: sqrt becomes one instruction; nothing reads errno after
 # one) and build/asan (-fsanitize=address,undefined).  The results are the
-# same bits as at -O2 (no fast-math: IEEE semantics kept); the peers'
-# 100-object scene takes 6.6 % fewer instructions and about 10 % less time.
-# build/rel also links with link-time optimisation, which inlines the small
-# functions one file calls in another (a body's pose, the walk's entry, the
-# distance bounds): the same bits again, 3 % fewer instructions and 3-10 %
-# more frames/s in that scene.  Its objects are fat (real code beside the
+# same bits as at -O2 (no fast-math: IEEE semantics kept).  build/rel also
+# links with link-time optimisation, which inlines the small functions one
+# file calls in another (a body's pose, the walk's entry, the distance
+# bounds): the same bits again.  Its objects are fat (real code beside the
 # LTO code), so libvroc.a links into a program built without -flto too.
 # Sources are found by wildcard, so a new file in src/, shell/ or tests/
-# needs no edit here.
+# needs no edit here.  The shell sees include/ only (it uses vroc.h, never
+# the library's insides); the library and the tests see src/ too.
+# `make deps` checks for the Debian packages every time it is asked; the
+# builds depend on a stamp that reruns that check when install-deps.sh
+# changes (a new dependency), so an ordinary build does not.
 
 PREFIX ?= /usr/local
 
 WARN   = -std=c99 -Wall -Wextra -pedantic -Werror
 DEFS   = -D_POSIX_C_SOURCE=200809L
-INCS   = -Iinclude -Isrc -isystem /usr/include/suitesparse
+INCS   = -Iinclude -Isrc -Ibuild/gen -isystem /usr/include/suitesparse
+SHELL_INCS = -Iinclude
 LIBS   = -lccd -lklu -llcm -ldl -lm
 RL_LIBS = -lreadline
 GL_LIBS = -lOSMesa
@@ -53,13 +56,17 @@ all: $(PRODUCTS)
 deps:
 	@sh tools/install-deps.sh
 
+build/deps.stamp: tools/install-deps.sh
+	@sh tools/install-deps.sh
+	@mkdir -p build && touch $@
+
 $(PRODUCTS): %: build/rel/%
 	cp $< $@
 
 # LCM message types: C code generated at build time, never checked in.  The
 # generated code is not -pedantic clean (function pointer <-> void *), so it
 # is compiled with those two warnings off.
-build/gen/vroc_%.c: src/parallel/%.lcm | deps
+build/gen/vroc_%.c: src/parallel/%.lcm | build/deps.stamp
 	@mkdir -p build/gen
 	lcm-gen -c --c-cpath build/gen --c-hpath build/gen $<
 # the header comes with the .c: a type's other users (its .d files name the
@@ -74,9 +81,11 @@ $(1)_BENCH := $$(patsubst tests/%.c,build/$(1)/tests/%,$$(BENCH_SRC))
 # kept, so that make check's last line is its summary, not make's clean-up
 .SECONDARY: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC) $$(BENCH_SRC))
 
-build/$(1)/%.o: %.c | $$(LCM_GEN) deps
+build/$(1)/%.o: %.c | $$(LCM_GEN) build/deps.stamp
 	@mkdir -p $$(@D)
-	$$(CC) $$(WARN) $$(DEFS) $$(INCS) -Ibuild/gen $$($(1)_CFLAGS) -MMD -MP -c $$< -o $$@
+	$$(CC) $$(WARN) $$(DEFS) $$(INCS) $$($(1)_CFLAGS) -MMD -MP -c $$< -o $$@
+
+build/$(1)/shell/%.o: INCS = $$(SHELL_INCS)
 
 build/$(1)/gen/%.o: build/gen/%.c | $$(LCM_GEN)
 	@mkdir -p $$(@D)
@@ -94,7 +103,7 @@ build/$(1)/vroc-gp: build/$(1)/shell/gp_main.o build/$(1)/libvroc.a
 
 # the renderer is a module of its own, dlopen()ed on first use, so that a
 # run without a display never loads OSMesa (and the LLVM it pulls in)
-build/$(1)/vroc-render.so: src/render.c src/render.h | deps
+build/$(1)/vroc-render.so: src/render.c src/render.h | build/deps.stamp
 	@mkdir -p $$(@D)
 	$$(CC) $$(WARN) $$(DEFS) $$(INCS) $$($(1)_CFLAGS) -fPIC -shared -o $$@ $$< $$($(1)_LDFLAGS) $$(GL_LIBS) -lm
 

@@ -1,5 +1,5 @@
 /* broadphase.h — which bodies could meet in the rest of a frame, so that a
- * pair owner (gp.c) looks only at those pairs.
+ * pair owner (owner.c, dormancy.c) looks only at those pairs.
  *
  * Each held body has a box for the rest of the current frame: a moving
  * body's is the box its centre sweeps (exact path extremes), padded by its

@@ -304,9 +304,8 @@ static double clear_of(const vrAhead *a, int ha, const vrAhead *b, int hb, doubl
  * bound is above d while, for one of the four choices of line or headroom
  * on each side, every pair of lines leaves the gap above d; each pair
  * gives a quadratic, and its first root.  A side that does not turn has
- * one line, 0, and no headroom to choose.  (Conservative advancement,
- * before: 16 steps, stopping 1/32 short; the same instructions in keys
- * that reach further, 10 % fewer heap pops in peer-random-100.) */
+ * one line, 0, and no headroom to choose.  (Conservative advancement in
+ * a fixed number of steps stops short of where the bound goes.) */
 double vrDistBound_Clear(const vrDistBound *db, double d, double from, double until)
 {
     double tau = from > db->te ? from - db->te : 0, span = until - db->te, closing, half_accel, base, t;

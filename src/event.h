@@ -25,7 +25,7 @@ typedef struct vrEvent {
     double e;            /* restitution to use */
     double depth;        /* push-out */
     int body, partner;   /* support events: body is (no longer) supported by partner */
-    vec3 corner[3];      /* support begins: corners spanning the contact region (gp.c) */
+    vec3 corner[3];      /* support begins: corners spanning the contact region (pair_events.c) */
     int ncorner;
 } vrEvent;
 

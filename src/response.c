@@ -14,8 +14,8 @@
  * the same equations, so the same solution, with every body's block a
  * unit diagonal whatever its units: a 0.2 kg apple's inertia rows (1e-4)
  * no longer sit beside a table's identity rows, klu_rcond's ratio of
- * pivots measures the contact, not the units, and polish() is needed for
- * 174 of Office's 1,570 solves, not 1,421.  The pattern is the same for
+ * pivots measures the contact, not the units, and polish() is rarely
+ * needed.  The pattern is the same for
  * every contact (explicit zeros where a value vanishes), so KLU analyses it
  * once.  Pivots: klu_refactor reuses the pivot order of the factorisation
  * it was given, so results would depend on which contacts were factored
@@ -272,8 +272,8 @@ vrResponder *vrResponder_Create(void)
     /* no row scaling by KLU: the rows come in unit-free (assemble), a
      * refactor keeps its pivots, and an LU without pivoting of D A is D
      * times that of A, so scaling would only add rounding; the pattern is
-     * ours, so KLU's input checks are not needed either: 35 % of
-     * klu_refactor's work, and every answer is still checked. */
+     * ours, so KLU's input checks are not needed either (a large part of
+     * klu_refactor's work), and every answer is still checked. */
     r->common.scale = -1;
     build_pattern(r);
     r->symbolic = klu_analyze(N, r->Ap, r->Ai, &r->common);

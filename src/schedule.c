@@ -235,7 +235,7 @@ double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, doubl
  * centres come within D of each other exactly at the first root of
  * |dx + dv tau|^2 = D^2; the bounds above only see the closing speed
  * along the line between them now, and a pair flying past each other was
- * looked at again and again (in peer-random-100, 54 k of 205 k looks).
+ * looked at again and again.
  * D keeps the KEY_MARGIN (rounding of a minute-long run's positions is
  * below 1e-13 m): a path that enters the envelope goes 1e-9 m deep into
  * D's sphere, far above the root's rounding unless the centres are

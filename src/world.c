@@ -913,7 +913,7 @@ static void drop_support(const vrWorld *w, vrBodyState *st, int j)
 }
 
 /* a partner made static (or dynamic) by an edit: the support's `fixed`
- * (hold_to_supports in gp.c) follows, and a body resting on it wakes */
+ * (hold_to_supports in effect.c) follows, and a body resting on it wakes */
 static void refix_support(const vrWorld *w, vrBodyState *st, int j)
 {
     st->support[j].fixed = w->obj[st->support[j].partner]->body.is_static;

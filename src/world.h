@@ -5,7 +5,7 @@
 #define VROC_WORLD_H
 
 #include "vroc.h"
-#include "gp.h"
+#include "owner.h"
 #include "reach.h"
 
 typedef struct vrSgp vrSgp;

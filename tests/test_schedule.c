@@ -4,7 +4,7 @@
 #include <string.h>
 #include "test.h"
 #include "schedule.h"
-#include "gp.h"
+#include "owner.h"
 
 #define TEST_LCG_SEED 777ULL
 #include "test_lcg.h"

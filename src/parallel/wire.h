@@ -4,7 +4,7 @@
 #ifndef VROC_WIRE_H
 #define VROC_WIRE_H
 
-#include "gp.h"
+#include "owner.h"
 #include "world.h"
 #include "vroc_body_def_t.h"
 #include "vroc_body_state_t.h"

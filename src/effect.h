@@ -1,4 +1,4 @@
-/* respond.h — answering an event: the bodies' new states (SPEC 3.1, 3.4) */
+/* effect.h — what an event does to its bodies: the bodies' new states (SPEC 3.1, 3.4) */
 #ifndef VROC_RESPOND_H
 #define VROC_RESPOND_H
 
@@ -14,6 +14,6 @@
  * ended; then removes what is left of each body's speed along a static
  * support's normal when slower than VR_V_EPS.  -1 when the impulse solve
  * fails or memory runs out. */
-int vrRespond(vrBody **body, vrResponder *responder, const vrFlight *flight, const vrEvent *ev, vrUpdate *up);
+int vrEffect_Compute(vrBody **body, vrResponder *responder, const vrFlight *flight, const vrEvent *ev, vrUpdate *up);
 
 #endif

@@ -1,4 +1,4 @@
-/* gp.h — a pair owner: the thesis's Graphics Processor (3.4.2, 3.5).
+/* owner.h — a pair owner: the thesis's Graphics Processor (3.4.2, 3.5).
  *
  * An owner holds some object pairs, the bodies those pairs need, a
  * collision heap over its pairs, and the walk caches.  It answers the one
@@ -14,10 +14,10 @@
  * not on how far each owner had looked, nor on how pairs are spread over
  * owners.  That is what makes runs reproducible bit for bit.
  */
-#ifndef VROC_GP_H
-#define VROC_GP_H
+#ifndef VROC_OWNER_H
+#define VROC_OWNER_H
 
-#include "respond.h"
+#include "effect.h"
 #include "schedule.h"
 
 #define VR_INSTANT_MAX 64      /* responses at one instant before moving on (SPEC 3.1) */

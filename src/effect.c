@@ -1,10 +1,10 @@
-/* respond.c — what an event does to its bodies (SPEC 3.1, 3.4): an impact
+/* effect.c — what an event does to its bodies (SPEC 3.1, 3.4): an impact
  * or a contact impulse (the 15x15 solve of response.c, then the spin clamp),
  * a push-out of overlapping bodies, support beginning (the region's normal
  * velocities settled) or ending.  The result is an update: the new states of
  * the bodies it changed, which every holder of those bodies applies alike
- * (event.c).  The owner that found the event answers it (gp.c). */
-#include "respond.h"
+ * (event.c).  The owner that found the event answers it (owner.c). */
+#include "effect.h"
 
 /* what a response reads: the bodies by id, the solver, the flight settings */
 typedef struct vrResponding {
@@ -272,7 +272,7 @@ static int respond(const vrResponding *o, const vrEvent *ev, vrUpdate *up)
     }
 }
 
-int vrRespond(vrBody **body, vrResponder *responder, const vrFlight *flight, const vrEvent *ev, vrUpdate *up)
+int vrEffect_Compute(vrBody **body, vrResponder *responder, const vrFlight *flight, const vrEvent *ev, vrUpdate *up)
 {
     vrResponding o;
     o.body = body;

@@ -1,0 +1,230 @@
+/* lookahead.c — a pair owner's answer to the coordinator's question
+ * (thesis 3.4.2; ARCHITECTURE "the loop, once"): for a span [t0, T] on
+ * the coordinator's grid it visits the grid points in order; at each it
+ * evaluates the pairs that are due (all of them with heap = 0; with the
+ * heap, those whose expected earliest event time has come, thesis
+ * 3.3.1.2), and stops at the first grid point that has events.  An impact
+ * found at a grid point is moved back to its moment by bisection of the
+ * step (bisect.c).  Pairs are evaluated with the same operations whatever
+ * the heap mode or the owner, so the outcome is the same; the heap only
+ * skips checks that cannot matter.
+ * Look-ahead is speculative: what it learnt past the first event of all
+ * is rolled back by vrOwner_Advance (the undo log).
+ *   remember, vrOwner_Advance   the undo log
+ *   vrOwner_PutOffKey, later_keys   keys made once no earlier impact drops them
+ *   evaluate                    one pair at one grid point: cheap looks,
+ *                               query, bisection, events, quiet proofs
+ *   take_first, span_start, collect_due, vrOwner_FirstEvent   the grid walk */
+#include <stdlib.h>
+#include "owner_state.h"
+#include "grow.h"
+
+static void remember(vrOwner *o, int pi, double at)
+{
+    vrUndo *u;
+    if (vrGrow((void **)&o->undo, &o->undocap, o->nundo + 1, sizeof *o->undo) != 0) return;
+    u = &o->undo[o->nundo++];
+    u->pair = pi;
+    u->at = at;
+    u->inside = o->pair[pi].inside;
+    u->t_check = o->pair[pi].t_check;
+    u->key = o->pair[pi].key;
+    u->quiet_until = o->pair[pi].quiet_until;
+}
+
+void vrOwner_Advance(vrOwner *o, double t)
+{
+    int i;
+    for (i = o->nundo - 1; i >= 0; i--) {
+        const vrUndo *u = &o->undo[i];
+        vrPair *p = &o->pair[u->pair];
+        if (u->at <= t) continue;
+        p->t_check = u->t_check;
+        p->quiet_until = u->quiet_until;
+        vrPair_Settle(o, u->pair, u->inside, u->key);
+    }
+    o->nundo = 0;
+    if (o->pending_t != t) o->npending = 0;
+}
+
+/* the time of the first event found so far at this grid point */
+static double earliest_found(const vrOwner *o)
+{
+    double t = INFINITY;
+    int i;
+    for (i = 0; i < o->nfound; i++) t = vr_min(t, o->found[i].t);
+    return t;
+}
+
+/* a pair found outside at the grid point being looked at: its key (from
+ * dist along n) is made by later_keys; 0 when keys are made at once */
+int vrOwner_PutOffKey(vrOwner *o, int pi, double dist, vec3 n)
+{
+    struct vrLaterKey *k;
+    if (!o->defer_keys || vrGrow((void **)&o->later, &o->latercap, o->nlater + 1, sizeof *o->later) != 0) return 0;
+    k = &o->later[o->nlater++];
+    k->pair = pi, k->dist = dist, k->n = n;
+    return 1;
+}
+
+/* an event found so far comes before t */
+static int impact_before(const vrOwner *o, double t) { return earliest_found(o) < t; }
+
+/* the keys put off at grid point t: made, unless an impact
+ * before t means they would be rolled back unused (among many bodies,
+ * most looks at a grid point with an impact come before it) */
+static void later_keys(vrOwner *o, double t)
+{
+    int i, drop = impact_before(o, t);
+    for (i = 0; i < o->nlater && !drop; i++) {
+        const struct vrLaterKey *k = &o->later[i];
+        vrPair_Settle(o, k->pair, 0, vrPair_Key(o, &o->pair[k->pair], t, k->dist, k->n));
+    }
+    o->nlater = 0;
+}
+
+/* Evaluates pair pi at t.  t_prev is the previous grid point (t_prev == t at
+ * a span start, where no step can be bisected).  Returns 1 with *ev when the
+ * pair has an event. */
+static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
+{
+    vrPair *p = &o->pair[pi];
+    vrPose pa, pb;
+    vrContact c;
+    int was_inside;
+    double wanted = earliest_found(o);   /* events found here so far: later ones are dropped */
+    remember(o, pi, t);
+    p->quiet_until = -INFINITY;
+    if (vrPair_ClearBySpheres(o, pi, t) || vrPair_ClearByWalk(o, pi, t)) return 0;
+    vrPair_Query(o, p, t, 1, &pa, &pb, &c);   /* the region is only made inside the envelope */
+    p->t_check = t;
+    if (c.dist > o->p.d) {
+        was_inside = p->inside;
+        if (was_inside || t == t_prev || !vrOwner_PutOffKey(o, pi, c.dist, c.n))
+            vrPair_Settle(o, pi, 0, vrPair_Key(o, p, t, c.dist, c.n));
+        return was_inside || t == t_prev ? vrPair_LostSupport(o, ev, t, p, &c) : 0;
+    }
+    if (!p->inside && t > t_prev) {
+        double at = vrPair_Bisect(o, p, t_prev, t, &c, o->p.d, wanted);
+        if (isnan(at) || vrPair_Impact(o, ev, p, at)) {
+            vrPair_Settle(o, pi, p->inside, t);  /* due again at once: it is rolled back or re-evaluated */
+            return !isnan(at);
+        }
+    }
+    was_inside = p->inside;
+    vrPair_Settle(o, pi, 1, t);
+    vrPair_ForEvents(o, p, t, &pa, &pb, &c);   /* the query above had the region: vrPair_EventQuery's */
+    if (was_inside && t > t_prev && c.dist < -VR_PENETRATION_TOL) {
+        double at = vrPair_Bisect(o, p, t_prev, t, &c, 0, wanted);
+        if (isnan(at)) return 0;         /* after an event found here: rolled back */
+        if (vrPair_Touch(o, ev, p, at)) return 1; /* due again at once, as after an impact */
+    }
+    if (vrPair_InsideEvents(o, ev, t, p, &pa, &pb, &c)) return 1;
+    if (o->p.use_heap) p->quiet_until = vrPair_QuietHorizon(o, p, t, &pa, &pb, &c);
+    return 0;
+}
+
+static int cmp_events(const void *x, const void *y)
+{
+    const vrEvent *a = x, *b = y;
+    return vrEvent_Before(a, b) ? -1 : vrEvent_Before(b, a) ? 1 : 0;
+}
+
+/* keeps the events found at one instant; returns the first */
+static int take_first(vrOwner *o, double at, vrEvent *ev)
+{
+    int i;
+    qsort(o->found, (size_t)o->nfound, sizeof *o->found, cmp_events);
+    *ev = o->found[0];
+    o->npending = 0;
+    for (i = 0; i < o->nfound; i++)
+        if (o->found[i].t == at) vrEvents_Push(&o->pending, &o->npending, &o->pendcap, &o->found[i]);
+    o->pending_t = at;
+    return 1;
+}
+
+static void evaluate_into_found(vrOwner *o, int pi, double t, double t_prev, int keep)
+{
+    vrEvent ev;
+    if (!o->pair[pi].scheduled) return;
+    if (o->progress && (o->checks & 255) == 0) o->progress(o->progress_ctx);
+    if (evaluate(o, pi, t, t_prev, &ev) && keep) vrEvents_Push(&o->found, &o->nfound, &o->foundcap, &ev);
+}
+
+/* k = 0: pairs whose bodies changed are evaluated at the span start; events
+ * still pending there (found at this instant, bodies unchanged) stand */
+static void span_start(vrOwner *o, double ts, int allow)
+{
+    int i;
+    for (i = 0; i < o->flagged.n; i++) {
+        int pi = o->flagged.v[i];
+        o->pair[pi].flagged = 0;
+        evaluate_into_found(o, pi, ts, ts, allow);
+    }
+    o->flagged.n = 0;
+    if (allow && o->pending_t == ts)
+        for (i = 0; i < o->npending; i++) vrEvents_Push(&o->found, &o->nfound, &o->foundcap, &o->pending[i]);
+    o->npending = 0;
+}
+
+static void collect_due(vrOwner *o, double t)
+{
+    double key;
+    int id;
+    o->due.n = o->due_inside.n = 0;
+    if (!o->p.use_heap) {
+        for (id = 0; id < o->npair; id++)
+            if (o->pair[id].scheduled) vrIntList_Push(o->pair[id].inside ? &o->due_inside : &o->due, id);
+        return;
+    }
+    /* the order pairs are evaluated in at one grid point does not matter:
+     * they do not touch each other, and events are sorted afterwards */
+    for (id = 0; id < o->active.n; id++)
+        if (!(o->pair[o->active.v[id]].quiet_until >= t)) vrIntList_Push(&o->due_inside, o->active.v[id]);
+    while ((id = vrHeap_Top(&o->heap, &key)) >= 0 && key <= t) {
+        vrHeap_Pop(&o->heap);
+        o->heap_pops++;
+        if (!(o->hot[id] & HOT_DORMANT) && vrPair_Apart(o, id)) vrPair_MakeDormant(o, id);
+        if (!(o->hot[id] & HOT_DORMANT)) vrIntList_Push(&o->due, id);
+    }
+}
+
+/* may inside pair pi overlap at t (so that it may touch before t)?  The
+ * walk decides: the canonical distance may lie up to 1e-6 m below it
+ * (contact.h), so a walk within VR_QUICK_CLEAR of touching says maybe. */
+static int overlaps(vrOwner *o, int pi, double t)
+{
+    return vrPair_Within(o, &o->pair[pi], t, VR_QUICK_CLEAR, t, t, NULL);
+}
+
+int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *ev)
+{
+    long k = 1;
+    int i;
+    o->nfound = 0;
+    if (!(g->T == o->bp.T)) vrOwner_NewFrame(o, g);
+    o->bp.t0 = g->t0;
+    span_start(o, g->t0, allow_instant);
+    if (o->nfound) return take_first(o, g->t0, ev);
+    while (k <= g->n) {
+        double t = vrGrid_Point(g, k), key;
+        collect_due(o, t);
+        o->defer_keys = 1;
+        for (i = 0; i < o->due.n; i++) evaluate_into_found(o, o->due.v[i], t, vrGrid_Point(g, k - 1), 1);
+        o->defer_keys = 0;
+        /* A pair inside the envelope has its events at grid points only,
+         * unless it overlaps there (touch): after an event bisected to
+         * before t the others could only be rolled back (in a heap of
+         * bodies, most of the look-ahead's work), so only overlapping ones
+         * are looked at, as a worker without that event would */
+        for (i = 0; i < o->due_inside.n; i++)
+            if (!impact_before(o, t) || overlaps(o, o->due_inside.v[i], t))
+                evaluate_into_found(o, o->due_inside.v[i], t, vrGrid_Point(g, k - 1), 1);
+        later_keys(o, t);
+        if (o->nfound) return take_first(o, t, ev);
+        if (!o->p.use_heap || o->active.n > 0) { k++; continue; }
+        if (vrHeap_Top(&o->heap, &key) < 0) break;
+        k = k + 1 > vrSchedule_FirstPointAtOrAfter(g, key) ? k + 1 : vrSchedule_FirstPointAtOrAfter(g, key);
+    }
+    return 0;
+}
