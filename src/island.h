@@ -1,0 +1,66 @@
+/* island.h — the contacts of one instant solved together (SPEC 7).
+ *
+ * An island is a set of bodies and the contacts between them (and with
+ * static bodies) at one instant.  Its impulses are found together, so a
+ * stack's weight reaches the floor and a box landing flat on four corners
+ * gets one answer.  The law, at every contact point: the normal impulse is
+ * >= 0 and the relative normal velocity after it is at least the point's
+ * floor (0 for a touching point; a negative floor lets a point with a gap
+ * close it, speculatively), one or the other binding (complementarity);
+ * friction acts on the contact as a whole (a patch): the tangential
+ * impulse at the points' centroid stops the sliding while it can, and is
+ * at most mu times the points' normal impulses together in every direction
+ * otherwise (Coulomb's round cone), against the slip; a twist about the
+ * normal likewise within that times the patch's mean radius.  Restitution is 0: impacts that bounce are events
+ * of their own (SPEC 3.1), answered pair by pair.
+ *
+ * Solved by projected Gauss-Seidel in a fixed order (contacts as given,
+ * points in order), so the same island gives the same bits in every
+ * process; then, when the island rests on static bodies, one pass from the
+ * ground up in which each contact's lower body is held still (shock
+ * propagation, Guendelman, Bridson and Fedkiw 2003), so that whatever the
+ * mass ratios no contact of a stack is left approaching.  Each step of
+ * either pass lowers the kinetic energy or keeps it.
+ */
+#ifndef VROC_ISLAND_H
+#define VROC_ISLAND_H
+
+#include "vec.h"
+
+#define VR_ISLAND_POINTS 8     /* points of one contact the solve keeps */
+
+typedef struct vrIslandBody {
+    int dynamic;              /* 0: static (infinite mass, never moves) */
+    double inv_mass;
+    mat33 inv_inertia;        /* world frame, about the centre of mass */
+    vec3 x;                   /* centre of mass */
+    vec3 v, w;                /* in: velocities before; out: after the impulses */
+    int level;                /* out: contacts from the nearest static body (0 static, -1 none) */
+} vrIslandBody;
+
+typedef struct vrIslandContact {
+    int a, b;                 /* body indices; n points from a toward b */
+    vec3 n;
+    double mu;                /* Coulomb coefficient, >= 0 */
+    int npoints;              /* 1..VR_ISLAND_POINTS */
+    vec3 p[VR_ISLAND_POINTS];           /* world points */
+    double floor[VR_ISLAND_POINTS];     /* lowest relative normal velocity allowed, <= 0 */
+    double lambda[VR_ISLAND_POINTS];    /* out: normal impulses on b (on a: minus) */
+    vec3 friction;            /* out: tangential impulse on b at the points' centroid */
+    double twist;             /* out: angular impulse on b about n (friction against turning) */
+} vrIslandContact;
+
+typedef struct vrIslandStats {
+    int sweeps;               /* Gauss-Seidel sweeps made */
+    int shock;                /* 1 when the ground-up pass ran */
+    int frictionless;         /* 1 when friction had to go to keep the energy (see island.c) */
+    double residual;          /* largest normal velocity below a floor left, m/s */
+} vrIslandStats;
+
+/* Solves the island in place (body velocities updated, impulses in the
+ * contacts).  At most `sweeps` sweeps, fewer once no impulse changes by
+ * more than `tol` m/s of relative velocity.  0, or -1 on a bad argument. */
+int vrIsland_Solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
+                   vrIslandStats *st);
+
+#endif
