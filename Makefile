@@ -39,7 +39,7 @@ LIB_SRC    := $(filter-out src/render.c,$(wildcard src/*.c src/parallel/*.c))
 LCM_TYPES  := $(wildcard src/parallel/*.lcm)
 LCM_GEN    := $(patsubst src/parallel/%.lcm,build/gen/vroc_%.c,$(LCM_TYPES))
 SHELL_SRC  := $(filter-out shell/gp_main.c,$(wildcard shell/*.c))
-TEST_SRC   := $(wildcard tests/test_*.c)
+TEST_SRC   := $(filter-out tests/bench_%,$(wildcard tests/*.c))
 BENCH_SRC  := $(wildcard tests/bench_*.c)
 
 PRODUCTS = libvroc.a vroc vroc-gp vroc-render.so
@@ -69,7 +69,7 @@ build/gen/vroc_%.h: build/gen/vroc_%.c ;
 define VARIANT
 $(1)_OBJ := $$(patsubst %.c,build/$(1)/%.o,$$(LIB_SRC)) \
             $$(patsubst build/gen/%.c,build/$(1)/gen/%.o,$$(LCM_GEN))
-$(1)_TESTS := $$(patsubst tests/%.c,build/$(1)/tests/%,$$(TEST_SRC))
+$(1)_TESTS := build/$(1)/tests/vroc-tests
 $(1)_BENCH := $$(patsubst tests/%.c,build/$(1)/tests/%,$$(BENCH_SRC))
 # kept, so that make check's last line is its summary, not make's clean-up
 .SECONDARY: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC) $$(BENCH_SRC))
@@ -98,7 +98,11 @@ build/$(1)/vroc-render.so: src/render.c src/render.h | deps
 	@mkdir -p $$(@D)
 	$$(CC) $$(WARN) $$(DEFS) $$(INCS) $$($(1)_CFLAGS) -fPIC -shared -o $$@ $$< $$($(1)_LDFLAGS) $$(GL_LIBS) -lm
 
-build/$(1)/tests/%: build/$(1)/tests/%.o build/$(1)/libvroc.a
+# one runner: tests/main.c and every tests/*.c beside it (each test_*.c a suite)
+build/$(1)/tests/vroc-tests: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC)) build/$(1)/libvroc.a
+	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
+
+build/$(1)/tests/bench_%: build/$(1)/tests/bench_%.o build/$(1)/libvroc.a
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
 
 $(1)-all: build/$(1)/libvroc.a build/$(1)/vroc build/$(1)/vroc-gp build/$(1)/vroc-render.so $$($(1)_TESTS)

@@ -128,9 +128,8 @@ static int test_meeting_finds_exactly_the_overlapping_boxes(void)
     return 0;
 }
 
-int main(int argc, char **argv)
-{
-    test_init(argc, argv);
-    RUN_TEST(test_meeting_finds_exactly_the_overlapping_boxes);
-    return test_summary();
-}
+static const vrTest tests[] = {
+    TEST(test_meeting_finds_exactly_the_overlapping_boxes),
+};
+
+const vrTestSuite vrSuite_Broadphase = {"broadphase", tests, TEST_COUNT(tests), NULL, NULL, 0};

@@ -413,24 +413,28 @@ static int test_a_box_reaches_as_far_as_its_vertices(void)
     return 0;
 }
 
-int main(int argc, char **argv)
+static int make_polys(void)
 {
-    int rc;
-    test_init(argc, argv);
-    if (vrPolyhedron_Cube(vec3_make(0.15, 0.15, 0.15), &cube_poly, NULL, 0)
-        || vrPolyhedron_Cube(vec3_make(0.4, 0.3, 0.05), &plate_poly, NULL, 0))
-        return 1;
-    RUN_TEST(test_bounds_never_cross_the_distance);
-    RUN_TEST(test_bounds_decide_near_the_measurement);
-    RUN_TEST(test_bounds_follow_the_vertex_that_overtakes);
-    RUN_TEST(test_bounds_after_the_cap_follow_a_line);
-    RUN_TEST(test_bounds_follow_a_body_sliding_over_a_wall);
-    RUN_TEST(test_bounds_follow_a_sphere_passing_a_sphere);
-    RUN_TEST(test_no_bounds_for_tumbling_or_capped_motion);
-    RUN_TEST(test_clear_never_passes_the_envelope);
-    RUN_TEST(test_a_box_reaches_as_far_as_its_vertices);
-    rc = test_summary();
+    return vrPolyhedron_Cube(vec3_make(0.15, 0.15, 0.15), &cube_poly, NULL, 0)
+        || vrPolyhedron_Cube(vec3_make(0.4, 0.3, 0.05), &plate_poly, NULL, 0);
+}
+
+static void free_polys(void)
+{
     vrPolyhedron_Free(cube_poly);
     vrPolyhedron_Free(plate_poly);
-    return rc;
 }
+
+static const vrTest tests[] = {
+    TEST(test_bounds_never_cross_the_distance),
+    TEST(test_bounds_decide_near_the_measurement),
+    TEST(test_bounds_follow_the_vertex_that_overtakes),
+    TEST(test_bounds_after_the_cap_follow_a_line),
+    TEST(test_bounds_follow_a_body_sliding_over_a_wall),
+    TEST(test_bounds_follow_a_sphere_passing_a_sphere),
+    TEST(test_no_bounds_for_tumbling_or_capped_motion),
+    TEST(test_clear_never_passes_the_envelope),
+    TEST(test_a_box_reaches_as_far_as_its_vertices),
+};
+
+const vrTestSuite vrSuite_Distbound = {"distbound", tests, TEST_COUNT(tests), make_polys, free_polys, 0};

@@ -1333,44 +1333,43 @@ static int test_a_box_shoved_along_by_a_heavy_one_keeps_momentum(void)
     return 0;
 }
 
-int main(int argc, char **argv)
-{
-    test_init(argc, argv);
-    RUN_TEST(test_ball_dropped_from_h_bounces_to_h_e2);
-    RUN_TEST(test_elastic_ball_keeps_energy_over_100_bounces);
-    RUN_TEST(test_inelastic_ball_stops_and_rests);
-    RUN_TEST(test_head_on_equal_masses_exchange_velocities);
-    RUN_TEST(test_head_on_unequal_masses_follow_1d_formulas);
-    RUN_TEST(test_restitution_half_against_wall_halves_speed);
-    RUN_TEST(test_offcentre_cube_hit_conserves_momenta);
-    RUN_TEST(test_offcentre_superquadric_hit_conserves_momenta);
-    RUN_TEST(test_fast_small_ball_never_passes_thin_plate);
-    RUN_TEST(test_spinning_plank_never_passes_wall);
-    RUN_TEST(test_sliding_ball_stays_in_envelope_and_leaves_edge);
-    RUN_TEST(test_box_on_edge_tips_over_and_lies_flat);
-    RUN_TEST(test_balls_and_box_come_to_rest_without_jitter);
-    RUN_TEST(test_plank_across_two_blocks_rests_on_both);
-    RUN_TEST(test_ball_on_a_knocked_block_wakes_and_falls);
-    RUN_TEST(test_a_slanted_nudge_does_not_sink_a_supported_ball);
-    RUN_TEST(test_a_support_made_static_holds_like_a_static_one);
-    RUN_TEST(test_a_ball_woken_by_a_deleted_table_lands_on_the_floor);
-    RUN_TEST(test_a_box_or_table_made_thinner_mid_run_drops_the_box);
-    RUN_TEST(test_sliding_over_flush_tables_feels_no_seam);
-    RUN_TEST(test_a_real_step_still_stops_a_sliding_box);
-    RUN_TEST(test_settled_box_keeps_no_rocking_spin);
-    RUN_TEST(test_stack_placed_flat_rests_at_once);
-    RUN_TEST(test_far_furniture_costs_no_checks);
-    RUN_TEST(test_heap_on_off_and_reruns_are_bit_identical);
-    RUN_TEST(test_switching_the_heap_mid_run_changes_no_bit);
-    RUN_TEST(test_heap_on_off_agree_after_deletions_and_additions);
-    RUN_TEST(test_quiet_slides_cost_a_check_a_frame_and_no_bit);
-    RUN_TEST(test_quiet_supports_cost_a_check_a_frame_and_no_bit);
-    RUN_TEST(test_quiet_contacts_are_looked_at_once_in_several_frames);
-    RUN_TEST(test_things_on_a_table_give_the_same_bits_with_the_heap_and_without);
-    RUN_TEST(test_interpenetration_at_start_is_refused);
-    RUN_TEST(test_a_shallow_overlap_is_pushed_out_not_lifted);
-    RUN_TEST(test_a_spinning_top_on_the_floor_gains_no_energy);
-    RUN_TEST(test_a_pinched_superquadric_rolling_on_its_side_gains_no_energy);
-    RUN_TEST(test_a_box_shoved_along_by_a_heavy_one_keeps_momentum);
-    return test_summary();
-}
+static const vrTest tests[] = {
+    TEST(test_ball_dropped_from_h_bounces_to_h_e2),
+    TEST(test_elastic_ball_keeps_energy_over_100_bounces),
+    TEST(test_inelastic_ball_stops_and_rests),
+    TEST(test_head_on_equal_masses_exchange_velocities),
+    TEST(test_head_on_unequal_masses_follow_1d_formulas),
+    TEST(test_restitution_half_against_wall_halves_speed),
+    TEST(test_offcentre_cube_hit_conserves_momenta),
+    TEST(test_offcentre_superquadric_hit_conserves_momenta),
+    TEST(test_fast_small_ball_never_passes_thin_plate),
+    TEST(test_spinning_plank_never_passes_wall),
+    TEST(test_sliding_ball_stays_in_envelope_and_leaves_edge),
+    TEST(test_box_on_edge_tips_over_and_lies_flat),
+    TEST(test_balls_and_box_come_to_rest_without_jitter),
+    TEST(test_plank_across_two_blocks_rests_on_both),
+    TEST(test_ball_on_a_knocked_block_wakes_and_falls),
+    TEST(test_a_slanted_nudge_does_not_sink_a_supported_ball),
+    TEST(test_a_support_made_static_holds_like_a_static_one),
+    TEST(test_a_ball_woken_by_a_deleted_table_lands_on_the_floor),
+    TEST(test_a_box_or_table_made_thinner_mid_run_drops_the_box),
+    TEST(test_sliding_over_flush_tables_feels_no_seam),
+    TEST(test_a_real_step_still_stops_a_sliding_box),
+    TEST(test_settled_box_keeps_no_rocking_spin),
+    TEST(test_stack_placed_flat_rests_at_once),
+    TEST(test_far_furniture_costs_no_checks),
+    TEST(test_heap_on_off_and_reruns_are_bit_identical),
+    TEST(test_switching_the_heap_mid_run_changes_no_bit),
+    TEST(test_heap_on_off_agree_after_deletions_and_additions),
+    TEST(test_quiet_slides_cost_a_check_a_frame_and_no_bit),
+    TEST(test_quiet_supports_cost_a_check_a_frame_and_no_bit),
+    TEST(test_quiet_contacts_are_looked_at_once_in_several_frames),
+    TEST(test_things_on_a_table_give_the_same_bits_with_the_heap_and_without),
+    TEST(test_interpenetration_at_start_is_refused),
+    TEST(test_a_shallow_overlap_is_pushed_out_not_lifted),
+    TEST(test_a_spinning_top_on_the_floor_gains_no_energy),
+    TEST(test_a_pinched_superquadric_rolling_on_its_side_gains_no_energy),
+    TEST(test_a_box_shoved_along_by_a_heavy_one_keeps_momentum),
+};
+
+const vrTestSuite vrSuite_Dynamics = {"dynamics", tests, TEST_COUNT(tests), NULL, NULL, 0};

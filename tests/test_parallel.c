@@ -5,8 +5,9 @@
  * killed mid-run.
  *
  * UDP multicast runs only inside a private network namespace (nothing may
- * leave the machine): main() re-executes itself under `unshare -n` with a
- * multicast route on lo, and fails — never skips — when it cannot. */
+ * leave the machine): this suite is marked netns, so the runner (main.c)
+ * re-executes itself under `unshare -n` with a multicast route on lo
+ * (netns.h) before its first test, and fails — never skips — when it cannot. */
 #define _DEFAULT_SOURCE
 #include <signal.h>
 #include <stdlib.h>
@@ -17,7 +18,6 @@
 #include <lcm/lcm.h>
 #include <time.h>
 #include "vroc.h"
-#include "netns.h"
 
 #define UDPM "udpm://239.255.76.67:7667?ttl=0"
 
@@ -554,28 +554,32 @@ static int test_messages_do_not_grow_with_objects(void)
     return 0;
 }
 
-int main(int argc, char **argv)
+/* the serial run every other is compared with */
+static int run_serial(void)
 {
-    enter_namespace(argc, argv);
-    test_init(argc, argv);
     if (getenv("VROC_BUILD")) build_dir = getenv("VROC_BUILD");
     serial_60 = run(random_60, 0, UDPM, VR_DIST_ROUND_ROBIN, 200);
     printf("    serial: %lld collisions, hash %016llx\n", serial_60.stats.collisions, serial_60.hash);
-    RUN_TEST(test_in_process_workers_match_serial_bit_for_bit);
-    RUN_TEST(test_forked_workers_over_udp_match_serial);
-    RUN_TEST(test_lost_and_duplicated_messages_change_nothing);
-    RUN_TEST(test_killed_worker_is_replaced_by_the_others);
-    RUN_TEST(test_silent_worker_in_process_is_replaced);
-    RUN_TEST(test_no_worker_left_is_a_clear_error);
-    RUN_TEST(test_foreign_and_malformed_messages_are_ignored);
-    RUN_TEST(test_joint_supports_match_serial);
-    RUN_TEST(test_touching_tops_match_serial);
-    RUN_TEST(test_an_overlap_made_by_an_edit_stops_every_start);
-    RUN_TEST(test_counts_and_bits_survive_new_workers);
-    RUN_TEST(test_the_instant_cap_holds_across_frames);
-    RUN_TEST(test_hand_started_workers_serve_a_ttl1_url);
-    RUN_TEST(test_improved_distribution_meets_thesis_example);
-    RUN_TEST(test_improved_distribution_needs_fewer_copies_on_random_60);
-    RUN_TEST(test_messages_do_not_grow_with_objects);
-    return test_summary();
+    return 0;
 }
+
+static const vrTest tests[] = {
+    TEST(test_in_process_workers_match_serial_bit_for_bit),
+    TEST(test_forked_workers_over_udp_match_serial),
+    TEST(test_lost_and_duplicated_messages_change_nothing),
+    TEST(test_killed_worker_is_replaced_by_the_others),
+    TEST(test_silent_worker_in_process_is_replaced),
+    TEST(test_no_worker_left_is_a_clear_error),
+    TEST(test_foreign_and_malformed_messages_are_ignored),
+    TEST(test_joint_supports_match_serial),
+    TEST(test_touching_tops_match_serial),
+    TEST(test_an_overlap_made_by_an_edit_stops_every_start),
+    TEST(test_counts_and_bits_survive_new_workers),
+    TEST(test_the_instant_cap_holds_across_frames),
+    TEST(test_hand_started_workers_serve_a_ttl1_url),
+    TEST(test_improved_distribution_meets_thesis_example),
+    TEST(test_improved_distribution_needs_fewer_copies_on_random_60),
+    TEST(test_messages_do_not_grow_with_objects),
+};
+
+const vrTestSuite vrSuite_Parallel = {"parallel", tests, TEST_COUNT(tests), run_serial, NULL, 1};

@@ -199,14 +199,13 @@ static int test_light_bodies_need_no_refinement(void)
     return 0;
 }
 
-int main(int argc, char **argv)
-{
-    test_init(argc, argv);
-    RUN_TEST(test_klu_matches_closed_form_on_random_contacts);
-    RUN_TEST(test_axis_aligned_contacts_refactor_from_scratch);
-    RUN_TEST(test_extreme_scales_stay_accurate);
-    RUN_TEST(test_restitution_scales_normal_speed);
-    RUN_TEST(test_solution_independent_of_history);
-    RUN_TEST(test_light_bodies_need_no_refinement);
-    return test_summary();
-}
+static const vrTest tests[] = {
+    TEST(test_klu_matches_closed_form_on_random_contacts),
+    TEST(test_axis_aligned_contacts_refactor_from_scratch),
+    TEST(test_extreme_scales_stay_accurate),
+    TEST(test_restitution_scales_normal_speed),
+    TEST(test_solution_independent_of_history),
+    TEST(test_light_bodies_need_no_refinement),
+};
+
+const vrTestSuite vrSuite_Response = {"response", tests, TEST_COUNT(tests), NULL, NULL, 0};

@@ -539,18 +539,17 @@ static int test_support_on_a_sliding_body_keeps_momentum(void)
     return 0;
 }
 
-int main(int argc, char **argv)
-{
-    test_init(argc, argv);
-    RUN_TEST(test_key_never_overestimates);
-    RUN_TEST(test_sphere_keys_are_exact_for_free_pairs);
-    RUN_TEST(test_grid_follows_thesis_rule_without_spin);
-    RUN_TEST(test_impact_time_is_the_upper_end_after_48_halvings);
-    RUN_TEST(test_a_bisection_past_an_event_found_stops);
-    RUN_TEST(test_impact_times_of_spinning_boxes_are_48_halvings);
-    RUN_TEST(test_a_push_out_in_a_later_frame_is_no_hit);
-    RUN_TEST(test_the_start_check_looks_at_the_bodies_it_is_given);
-    RUN_TEST(test_a_push_out_does_not_drive_a_body_into_its_static_support);
-    RUN_TEST(test_support_on_a_sliding_body_keeps_momentum);
-    return test_summary();
-}
+static const vrTest tests[] = {
+    TEST(test_key_never_overestimates),
+    TEST(test_sphere_keys_are_exact_for_free_pairs),
+    TEST(test_grid_follows_thesis_rule_without_spin),
+    TEST(test_impact_time_is_the_upper_end_after_48_halvings),
+    TEST(test_a_bisection_past_an_event_found_stops),
+    TEST(test_impact_times_of_spinning_boxes_are_48_halvings),
+    TEST(test_a_push_out_in_a_later_frame_is_no_hit),
+    TEST(test_the_start_check_looks_at_the_bodies_it_is_given),
+    TEST(test_a_push_out_does_not_drive_a_body_into_its_static_support),
+    TEST(test_support_on_a_sliding_body_keeps_momentum),
+};
+
+const vrTestSuite vrSuite_Schedule = {"schedule", tests, TEST_COUNT(tests), NULL, NULL, 0};
