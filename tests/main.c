@@ -3,14 +3,17 @@
  *
  *   vroc-tests [--list] [FILTER...]
  *
- * With no FILTER every test runs.  A FILTER that is a suite's name selects
- * that suite's tests; any other selects the tests whose names contain it.
- * Each test prints `ok   NAME` or `FAIL NAME` after the lines it prints
- * itself; the last line is `N passed, M failed` (tests/run.sh adds it up),
- * and the exit status is 1 when a test failed.  --list prints each suite
- * and the names of its selected tests instead of running them.
+ * With no FILTER every test runs.  A FILTER that is a suite's name (its
+ * file's, without test_ and .c: `impacts`, `heap`) selects that suite's
+ * tests; any other selects the tests, in every suite, whose names contain
+ * it.  Each test prints `ok   NAME` or `FAIL NAME` after the lines it
+ * prints itself; the last line is `N passed, M failed` (tests/run.sh adds
+ * it up), and the exit status is 1 when a test failed.  --list prints the
+ * suites and the names of their selected tests instead of running them.
  *
+ *   is_suite_name  — whether a filter names a suite (then it is not a substring)
  *   selected       — whether the filters pick a test of a suite
+ *   any_selected   — whether they pick any of its tests
  *   needs_netns    — whether a selected test needs a private network namespace
  *   run_suite      — a suite's setup, its selected tests, its teardown
  *   list_suite     — the names --list prints
@@ -24,7 +27,8 @@
  * display was opened yet (no other suite opens one, and this keeps it so) */
 #define VR_SUITES(X)                                                              \
     X(Render) X(Mass) X(Polyhedron) X(Motion) X(Closest) X(Contact) X(Support)    \
-    X(Distbound) X(Broadphase) X(Reach) X(Schedule) X(Response) X(Dynamics) X(Parallel)
+    X(Distbound) X(Broadphase) X(Reach) X(Schedule) X(Response) X(Impacts)        \
+    X(Tunnelling) X(Rest) X(Sliding) X(Heap) X(Quiet) X(Energy) X(Parallel)
 
 #define VR_DECLARE(s) extern const vrTestSuite vrSuite_##s;
 VR_SUITES(VR_DECLARE)
@@ -44,12 +48,23 @@ void vrTest_Run(const char *name, vrTestFn fn)
     else failed++;
 }
 
+static int is_suite_name(const char *f)
+{
+    size_t k;
+    for (k = 0; k < sizeof suites / sizeof suites[0]; k++)
+        if (strcmp(f, suites[k]->name) == 0) return 1;
+    return 0;
+}
+
+/* a suite's name selects that suite; any other filter, the tests whose names contain it */
 static int selected(const vrTestSuite *s, const vrTest *t)
 {
     int i;
     if (nfilters == 0) return 1;
-    for (i = 0; i < nfilters; i++)
-        if (strcmp(filters[i], s->name) == 0 || strstr(t->name, filters[i])) return 1;
+    for (i = 0; i < nfilters; i++) {
+        if (is_suite_name(filters[i]) ? strcmp(filters[i], s->name) == 0 : strstr(t->name, filters[i]) != NULL)
+            return 1;
+    }
     return 0;
 }
 

@@ -6,6 +6,7 @@
 #include <string.h>
 #include "test.h"
 #include "broadphase.h"
+#include "scene.h"
 
 #define TEST_LCG_SEED 4242ULL
 #include "test_lcg.h"
@@ -25,13 +26,7 @@ static void make_spheres(void)
     flight.max_angular = 100;
     for (i = 0; i < NB; i++) {
         vrBody *b = &body[i];
-        double r = 0.1 + 0.2 * uni();
-        mat33 unit = mat33_diag(0.4 * r * r, 0.4 * r * r, 0.4 * r * r);
-        memset(b, 0, sizeof *b);
-        b->id = i;
-        b->shape.kind = VR_SHAPE_SPHERE;
-        b->shape.radius = r;
-        vrBody_SetMassProperties(b, i < NSTATIC ? -1 : 1, &unit, r, r);
+        vrScene_SphereBody(b, i, 0.1 + 0.2 * uni(), i < NSTATIC);
         vrBody_Anchor(b, 0, vec3_add(vec3_make(0, 0, 5), rvec(5)), i < NSTATIC ? vec3_zero() : rvec(3),
                       quat_identity(), vec3_zero(), &flight);
         ptr[i] = b;

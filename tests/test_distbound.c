@@ -4,6 +4,7 @@
 #include <string.h>
 #include "test.h"
 #include "distbound.h"
+#include "scene.h"
 
 #define TEST_LCG_SEED 0xD15B0D5ULL
 #include "test_lcg.h"
@@ -14,22 +15,9 @@ enum { SPHERE, CUBE, PLATE };
 
 static void make_body(vrBody *b, int id, int kind, int is_static)
 {
-    mat33 unit;
-    memset(b, 0, sizeof *b);
-    b->id = id;
-    if (kind == SPHERE) {
-        double r = 0.1 + 0.2 * uni();
-        b->shape.kind = VR_SHAPE_SPHERE;
-        b->shape.radius = r;
-        unit = mat33_diag(0.4 * r * r, 0.4 * r * r, 0.4 * r * r);
-        vrBody_SetMassProperties(b, is_static ? -1 : 1, &unit, r, r);
-        return;
-    }
-    b->shape.kind = VR_SHAPE_BOX;
-    b->shape.poly = kind == CUBE ? cube_poly : plate_poly;
-    b->shape.half = kind == CUBE ? vec3_make(0.15, 0.15, 0.15) : vec3_make(0.4, 0.3, 0.05);
-    vrBody_SetMassProperties(b, is_static ? -1 : 1, &b->shape.poly->inertia_unit, b->shape.poly->r_in,
-                             b->shape.poly->r_out);
+    if (kind == SPHERE) vrScene_SphereBody(b, id, 0.1 + 0.2 * uni(), is_static);
+    else if (kind == CUBE) vrScene_BoxBody(b, id, cube_poly, vec3_make(0.15, 0.15, 0.15), is_static);
+    else vrScene_BoxBody(b, id, plate_poly, vec3_make(0.4, 0.3, 0.05), is_static);
 }
 
 static quat random_turn(void) { return quat_normalize(quat_make(sym(1), sym(1), sym(1), sym(1))); }

@@ -15,6 +15,7 @@
 
 #include "test.h"
 #include "vroc.h"
+#include "scene.h"
 
 #define TEST_PI 3.14159265358979323846
 
@@ -35,30 +36,24 @@ static vrView test_view(int width, int height)
 static vrObjectId add_box(vrWorld *w, const char *name, const double c[3], const double h[3],
                           int r, int g, int b, int real)
 {
-    vrObjectId id = VR_NO_OBJECT;
-    vrObjectDef d;
+    vrObjectDef d = vrObjectDef_Default(VR_CUBE);
     int i;
-    if (vrWorld_CreateObject(w, name, VR_CUBE, &id, err, sizeof err)) return VR_NO_OBJECT;
-    vrWorld_GetObjectDef(w, id, &d);
     for (i = 0; i < 3; i++) d.translate[i] = c[i], d.size[i] = h[i];
     d.color[0] = r, d.color[1] = g, d.color[2] = b;
     d.mass = -1, d.mass_set = 1;
     d.real = real;
-    return vrWorld_SetObjectDef(w, id, &d, err, sizeof err) ? VR_NO_OBJECT : id;
+    return vrScene_Add(w, name, VR_CUBE, &d);
 }
 
 static vrObjectId add_sphere(vrWorld *w, const char *name, const double c[3], double radius,
                              int r, int g, int b)
 {
-    vrObjectId id = VR_NO_OBJECT;
-    vrObjectDef d;
+    vrObjectDef d = vrObjectDef_Default(VR_SPHERE);
     int i;
-    if (vrWorld_CreateObject(w, name, VR_SPHERE, &id, err, sizeof err)) return VR_NO_OBJECT;
-    vrWorld_GetObjectDef(w, id, &d);
     for (i = 0; i < 3; i++) d.translate[i] = c[i];
     d.radius = radius;
     d.color[0] = r, d.color[1] = g, d.color[2] = b;
-    return vrWorld_SetObjectDef(w, id, &d, err, sizeof err) ? VR_NO_OBJECT : id;
+    return vrScene_Add(w, name, VR_SPHERE, &d);
 }
 
 /* ---- pixels -------------------------------------------------------------- */
