@@ -3,7 +3,7 @@
 #   make          libvroc.a, vroc, vroc-gp, vroc-render.so in this folder
 #   make check    every test, built with ASan+UBSan (last line: N passed, M failed)
 #   make demo     runs scenes/demo.cmd and writes its frames and a picture
-#   make bench    prints the benchmarks (release build)
+#   make bench    prints the benchmarks (release build, bench/run.sh)
 #   make deps     installs the Debian packages when missing
 #   make install  under PREFIX (bin/, lib/vroc/, share/man/man1/)
 #
@@ -15,9 +15,11 @@
 # file calls in another (a body's pose, the walk's entry, the distance
 # bounds): the same bits again.  Its objects are fat (real code beside the
 # LTO code), so libvroc.a links into a program built without -flto too.
-# Sources are found by wildcard, so a new file in src/, shell/ or tests/
-# needs no edit here.  The shell sees include/ only (it uses vroc.h, never
-# the library's insides); the library and the tests see src/ too.
+# Sources are found by wildcard, so a new file in src/, shell/, tests/ or
+# bench/ needs no edit here: every tests/*.c goes into the one test runner,
+# build/VARIANT/tests/vroc-tests; each bench/bench_*.c is a program of its own.
+# The shell sees include/ only (it uses vroc.h, never the library's
+# insides); the library and the tests see src/ too.
 # `make deps` checks for the Debian packages every time it is asked; the
 # builds depend on a stamp that reruns that check when install-deps.sh
 # changes (a new dependency), so an ordinary build does not.
@@ -42,8 +44,8 @@ LIB_SRC    := $(filter-out src/render.c,$(wildcard src/*.c src/parallel/*.c))
 LCM_TYPES  := $(wildcard src/parallel/*.lcm)
 LCM_GEN    := $(patsubst src/parallel/%.lcm,build/gen/vroc_%.c,$(LCM_TYPES))
 SHELL_SRC  := $(filter-out shell/gp_main.c,$(wildcard shell/*.c))
-TEST_SRC   := $(wildcard tests/test_*.c)
-BENCH_SRC  := $(wildcard tests/bench_*.c)
+TEST_SRC   := $(wildcard tests/*.c)
+BENCH_SRC  := $(wildcard bench/bench_*.c)
 
 PRODUCTS = libvroc.a vroc vroc-gp vroc-render.so
 
@@ -76,8 +78,8 @@ build/gen/vroc_%.h: build/gen/vroc_%.c ;
 define VARIANT
 $(1)_OBJ := $$(patsubst %.c,build/$(1)/%.o,$$(LIB_SRC)) \
             $$(patsubst build/gen/%.c,build/$(1)/gen/%.o,$$(LCM_GEN))
-$(1)_TESTS := $$(patsubst tests/%.c,build/$(1)/tests/%,$$(TEST_SRC))
-$(1)_BENCH := $$(patsubst tests/%.c,build/$(1)/tests/%,$$(BENCH_SRC))
+$(1)_TESTS := build/$(1)/tests/vroc-tests
+$(1)_BENCH := $$(patsubst bench/%.c,build/$(1)/bench/%,$$(BENCH_SRC))
 # kept, so that make check's last line is its summary, not make's clean-up
 .SECONDARY: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC) $$(BENCH_SRC))
 
@@ -107,7 +109,12 @@ build/$(1)/vroc-render.so: src/render.c src/render.h | build/deps.stamp
 	@mkdir -p $$(@D)
 	$$(CC) $$(WARN) $$(DEFS) $$(INCS) $$($(1)_CFLAGS) -fPIC -shared -o $$@ $$< $$($(1)_LDFLAGS) $$(GL_LIBS) -lm
 
-build/$(1)/tests/%: build/$(1)/tests/%.o build/$(1)/libvroc.a
+# one runner: tests/main.c and every tests/*.c beside it (each test_*.c a suite)
+build/$(1)/tests/vroc-tests: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC)) build/$(1)/libvroc.a
+	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
+
+# a benchmark: one program each (bench/bench_*.c)
+build/$(1)/bench/%: build/$(1)/bench/%.o build/$(1)/libvroc.a
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
 
 $(1)-all: build/$(1)/libvroc.a build/$(1)/vroc build/$(1)/vroc-gp build/$(1)/vroc-render.so $$($(1)_TESTS)
@@ -121,7 +128,7 @@ check-asan: asan-all $(PRODUCTS)
 	@sh tests/run.sh build/asan
 
 bench: rel-all $(rel_BENCH)
-	@sh tools/bench.sh build/rel
+	@sh bench/run.sh build/rel
 
 demo: all
 	@sh tools/demo.sh

@@ -1,5 +1,6 @@
 /* netns.h — UDP multicast only inside a private network namespace (nothing
- * may leave the machine): a test or benchmark that uses udpm re-executes
+ * may leave the machine): the test runner (tests/main.c, when a suite
+ * marked netns is selected) or a benchmark that uses udpm re-executes
  * itself under `unshare -n` with lo up and a multicast route on it, and
  * fails loudly when it cannot (it never skips). */
 #ifndef VROC_NETNS_H

@@ -1,7 +1,8 @@
 #!/bin/sh
-# Runs every test binary in BUILD/tests and every shell transcript test,
-# prints each failure, and ends with one line `N passed, M failed`.
-# Usage: tests/run.sh BUILD_DIR   (BUILD_DIR holds vroc, vroc-gp, tests/)
+# Runs the test runner BUILD/tests/vroc-tests (every tests/test_*.c) and
+# every shell transcript test, prints each failure, and ends with one line
+# `N passed, M failed`.
+# Usage: tests/run.sh BUILD_DIR   (BUILD_DIR holds vroc, vroc-gp, tests/vroc-tests)
 set -u
 build=${1:?usage: tests/run.sh BUILD_DIR}
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -11,7 +12,7 @@ export LSAN_OPTIONS="suppressions=$top/tests/lsan.supp:print_suppressions=0"
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 
-add_counts() { # add_counts NAME LOGFILE STATUS: take the binary's summary line
+add_counts() { # add_counts NAME LOGFILE STATUS: take the suite's summary line
     line=$(tail -n 1 "$2")
     case "$line" in
     *" passed, "*" failed")
@@ -25,12 +26,8 @@ add_counts() { # add_counts NAME LOGFILE STATUS: take the binary's summary line
     grep -E '^(FAIL|    )' "$2" | sed "s|^|[$1] |"
 }
 
-for t in "$build"/tests/test_*; do
-    [ -x "$t" ] || continue
-    name=$(basename "$t")
-    (cd "$top" && VROC_BUILD="$build" "$t") >"$log" 2>&1
-    add_counts "$name" "$log" $?
-done
+(cd "$top" && VROC_BUILD="$build" "$build/tests/vroc-tests") >"$log" 2>&1
+add_counts vroc-tests "$log" $?
 for s in "$top"/tests/*.sh; do
     case "$(basename "$s")" in run.sh) continue ;; esac
     name=$(basename "$s" .sh)

@@ -1,10 +1,11 @@
 /* test.h — the tiny test harness (Box2D's test_macros.h is the model).
  *
  * A test is `static int test_name(void)` returning 0 when it passes; ENSURE*
- * print the failing line and return 1.  main() calls test_init(argc, argv),
- * then RUN_TEST for each test (argv[1], when given, is a substring filter on
- * test names), then returns test_summary(), which prints the line
- * `N passed, M failed` that tests/run.sh adds up.
+ * print the failing line and return 1.  Each tests/test_*.c ends with a
+ * table of its tests, `const vrTestSuite vrSuite_Name`, that tests/main.c
+ * lists once; main.c is the one runner (build/VARIANT/tests/vroc-tests):
+ * it runs the tests its arguments select, counts them, and ends with the
+ * line `N passed, M failed` that tests/run.sh adds up.
  */
 #ifndef VROC_TEST_H
 #define VROC_TEST_H
@@ -12,9 +13,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-
-static int test_passed_, test_failed_;
-static const char *test_filter_;
 
 #define ENSURE(cond)                                                                  \
     do {                                                                              \
@@ -46,26 +44,31 @@ static const char *test_filter_;
         }                                                                             \
     } while (0)
 
-#define RUN_TEST(fn)                                                                  \
-    do {                                                                              \
-        if (!test_filter_ || strstr(#fn, test_filter_)) {                             \
-            int r_ = fn();                                                            \
-            printf("%s %s\n", r_ == 0 ? "ok  " : "FAIL", #fn);                        \
-            fflush(stdout);                                                           \
-            if (r_ == 0) test_passed_++; else test_failed_++;                         \
-        }                                                                             \
-    } while (0)
+typedef int (*vrTestFn)(void);
 
-static inline void test_init(int argc, char **argv)
-{
-    test_filter_ = argc > 1 ? argv[1] : NULL;
-    setvbuf(stdout, NULL, _IOLBF, 0);
-}
+/* one test: its name (what a filter matches) and its function */
+typedef struct vrTest {
+    const char *name;
+    vrTestFn run;
+} vrTest;
 
-static inline int test_summary(void)
-{
-    printf("%d passed, %d failed\n", test_passed_, test_failed_);
-    return test_failed_ != 0;
-}
+/* a table entry: TEST(test_name) */
+#define TEST(fn) { #fn, fn }
+
+/* the tests of one file, in the order they run */
+typedef struct vrTestSuite {
+    const char *name;          /* the file's name without test_ and .c */
+    const vrTest *tests;
+    int count;
+    int (*setup)(void);        /* NULL, or run before its first selected test: nonzero fails the suite */
+    void (*teardown)(void);    /* NULL, or run after its last selected test */
+    int netns;                 /* needs UDP multicast: the runner enters a private network namespace */
+} vrTestSuite;
+
+#define TEST_COUNT(table) ((int)(sizeof(table) / sizeof((table)[0])))
+
+/* runs one test now (main.c counts it): prints `ok   NAME` or `FAIL NAME` */
+void vrTest_Run(const char *name, vrTestFn fn);
+#define RUN_TEST(fn) vrTest_Run(#fn, fn)
 
 #endif

@@ -6,6 +6,7 @@
 #include <string.h>
 #include "test.h"
 #include "broadphase.h"
+#include "scene.h"
 
 #define TEST_LCG_SEED 4242ULL
 #include "test_lcg.h"
@@ -25,13 +26,7 @@ static void make_spheres(void)
     flight.max_angular = 100;
     for (i = 0; i < NB; i++) {
         vrBody *b = &body[i];
-        double r = 0.1 + 0.2 * uni();
-        mat33 unit = mat33_diag(0.4 * r * r, 0.4 * r * r, 0.4 * r * r);
-        memset(b, 0, sizeof *b);
-        b->id = i;
-        b->shape.kind = VR_SHAPE_SPHERE;
-        b->shape.radius = r;
-        vrBody_SetMassProperties(b, i < NSTATIC ? -1 : 1, &unit, r, r);
+        vrScene_SphereBody(b, i, 0.1 + 0.2 * uni(), i < NSTATIC);
         vrBody_Anchor(b, 0, vec3_add(vec3_make(0, 0, 5), rvec(5)), i < NSTATIC ? vec3_zero() : rvec(3),
                       quat_identity(), vec3_zero(), &flight);
         ptr[i] = b;
@@ -128,9 +123,8 @@ static int test_meeting_finds_exactly_the_overlapping_boxes(void)
     return 0;
 }
 
-int main(int argc, char **argv)
-{
-    test_init(argc, argv);
-    RUN_TEST(test_meeting_finds_exactly_the_overlapping_boxes);
-    return test_summary();
-}
+static const vrTest tests[] = {
+    TEST(test_meeting_finds_exactly_the_overlapping_boxes),
+};
+
+const vrTestSuite vrSuite_Broadphase = {"broadphase", tests, TEST_COUNT(tests), NULL, NULL, 0};

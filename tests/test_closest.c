@@ -480,19 +480,21 @@ out:
     return rc;
 }
 
-int main(int argc, char **argv)
+static void free_shapes(void)
 {
-    int i, rc;
-    test_init(argc, argv);
-    RUN_TEST(test_walk_known_distances);
-    RUN_TEST(test_walk_matches_brute_force_on_random_poses);
-    RUN_TEST(test_walk_is_coherent_along_smooth_motion);
-    RUN_TEST(test_walk_terminates_on_degenerate_configurations);
-    RUN_TEST(test_walk_penetration_flag_agrees_with_brute_force_and_libccd);
-    RUN_TEST(test_walk_point_matches_reference);
-    RUN_TEST(test_walk_is_robust_on_thin_large_and_touching_shapes);
-    RUN_TEST(test_exhaustive_fallback_matches_brute_force);
-    rc = test_summary();
+    int i;
     for (i = 0; i < NSHAPES; i++) vrPolyhedron_Free(shape[i]);
-    return rc;
 }
+
+static const vrTest tests[] = {
+    TEST(test_walk_known_distances),
+    TEST(test_walk_matches_brute_force_on_random_poses),
+    TEST(test_walk_is_coherent_along_smooth_motion),
+    TEST(test_walk_terminates_on_degenerate_configurations),
+    TEST(test_walk_penetration_flag_agrees_with_brute_force_and_libccd),
+    TEST(test_walk_point_matches_reference),
+    TEST(test_walk_is_robust_on_thin_large_and_touching_shapes),
+    TEST(test_exhaustive_fallback_matches_brute_force),
+};
+
+const vrTestSuite vrSuite_Closest = {"closest", tests, TEST_COUNT(tests), NULL, free_shapes, 0};

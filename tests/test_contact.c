@@ -933,30 +933,29 @@ static int test_region_margin_is_the_same_in_either_sense_or_order(void)
     return 0;
 }
 
-int main(int argc, char **argv)
-{
-    test_init(argc, argv);
-    RUN_TEST(test_distance_is_brute_force_distance_and_independent_of_cache);
-    RUN_TEST(test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance);
-    RUN_TEST(test_walk_and_canonical_distance_under_a_long_edge);
-    RUN_TEST(test_touching_tilted_boxes_distance_is_brute_force);
-    RUN_TEST(test_edges_crossing_at_rounding_distance_touch);
-    RUN_TEST(test_overlapping_stack_boxes_are_seen_overlapping_from_every_start);
-    RUN_TEST(test_region_is_bit_identical_from_every_start_cache);
-    RUN_TEST(test_region_box_flat_on_table_is_its_four_bottom_corners);
-    RUN_TEST(test_region_overhanging_box_is_clipped_to_the_table);
-    RUN_TEST(test_region_tilted_box_gives_its_edge_clipped);
-    RUN_TEST(test_region_crossed_edges_give_one_point);
-    RUN_TEST(test_region_vertex_on_face_is_the_vertex);
-    RUN_TEST(test_region_is_reduced_to_its_extremes);
-    RUN_TEST(test_sphere_sphere_closed_form);
-    RUN_TEST(test_sphere_box_closed_form);
-    RUN_TEST(test_sphere_polyhedron_agrees_with_the_box_closed_form);
-    RUN_TEST(test_penetration_direction_points_from_a_to_b);
-    RUN_TEST(test_penetration_contact_separates_by_the_shallower_push);
-    RUN_TEST(test_a_box_in_a_walls_corner_is_pushed_out_of_the_wall);
-    RUN_TEST(test_contact_is_robust_on_thin_large_and_touching_shapes);
-    RUN_TEST(test_shapes_that_touch_exactly_get_the_face_normal_and_region);
-    RUN_TEST(test_region_margin_is_the_same_in_either_sense_or_order);
-    return test_summary();
-}
+static const vrTest tests[] = {
+    TEST(test_distance_is_brute_force_distance_and_independent_of_cache),
+    TEST(test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance),
+    TEST(test_walk_and_canonical_distance_under_a_long_edge),
+    TEST(test_touching_tilted_boxes_distance_is_brute_force),
+    TEST(test_edges_crossing_at_rounding_distance_touch),
+    TEST(test_overlapping_stack_boxes_are_seen_overlapping_from_every_start),
+    TEST(test_region_is_bit_identical_from_every_start_cache),
+    TEST(test_region_box_flat_on_table_is_its_four_bottom_corners),
+    TEST(test_region_overhanging_box_is_clipped_to_the_table),
+    TEST(test_region_tilted_box_gives_its_edge_clipped),
+    TEST(test_region_crossed_edges_give_one_point),
+    TEST(test_region_vertex_on_face_is_the_vertex),
+    TEST(test_region_is_reduced_to_its_extremes),
+    TEST(test_sphere_sphere_closed_form),
+    TEST(test_sphere_box_closed_form),
+    TEST(test_sphere_polyhedron_agrees_with_the_box_closed_form),
+    TEST(test_penetration_direction_points_from_a_to_b),
+    TEST(test_penetration_contact_separates_by_the_shallower_push),
+    TEST(test_a_box_in_a_walls_corner_is_pushed_out_of_the_wall),
+    TEST(test_contact_is_robust_on_thin_large_and_touching_shapes),
+    TEST(test_shapes_that_touch_exactly_get_the_face_normal_and_region),
+    TEST(test_region_margin_is_the_same_in_either_sense_or_order),
+};
+
+const vrTestSuite vrSuite_Contact = {"contact", tests, TEST_COUNT(tests), NULL, NULL, 0};

@@ -4,6 +4,7 @@
 #include <string.h>
 #include "test.h"
 #include "distbound.h"
+#include "scene.h"
 
 #define TEST_LCG_SEED 0xD15B0D5ULL
 #include "test_lcg.h"
@@ -14,22 +15,9 @@ enum { SPHERE, CUBE, PLATE };
 
 static void make_body(vrBody *b, int id, int kind, int is_static)
 {
-    mat33 unit;
-    memset(b, 0, sizeof *b);
-    b->id = id;
-    if (kind == SPHERE) {
-        double r = 0.1 + 0.2 * uni();
-        b->shape.kind = VR_SHAPE_SPHERE;
-        b->shape.radius = r;
-        unit = mat33_diag(0.4 * r * r, 0.4 * r * r, 0.4 * r * r);
-        vrBody_SetMassProperties(b, is_static ? -1 : 1, &unit, r, r);
-        return;
-    }
-    b->shape.kind = VR_SHAPE_BOX;
-    b->shape.poly = kind == CUBE ? cube_poly : plate_poly;
-    b->shape.half = kind == CUBE ? vec3_make(0.15, 0.15, 0.15) : vec3_make(0.4, 0.3, 0.05);
-    vrBody_SetMassProperties(b, is_static ? -1 : 1, &b->shape.poly->inertia_unit, b->shape.poly->r_in,
-                             b->shape.poly->r_out);
+    if (kind == SPHERE) vrScene_SphereBody(b, id, 0.1 + 0.2 * uni(), is_static);
+    else if (kind == CUBE) vrScene_BoxBody(b, id, cube_poly, vec3_make(0.15, 0.15, 0.15), is_static);
+    else vrScene_BoxBody(b, id, plate_poly, vec3_make(0.4, 0.3, 0.05), is_static);
 }
 
 static quat random_turn(void) { return quat_normalize(quat_make(sym(1), sym(1), sym(1), sym(1))); }
@@ -413,24 +401,28 @@ static int test_a_box_reaches_as_far_as_its_vertices(void)
     return 0;
 }
 
-int main(int argc, char **argv)
+static int make_polys(void)
 {
-    int rc;
-    test_init(argc, argv);
-    if (vrPolyhedron_Cube(vec3_make(0.15, 0.15, 0.15), &cube_poly, NULL, 0)
-        || vrPolyhedron_Cube(vec3_make(0.4, 0.3, 0.05), &plate_poly, NULL, 0))
-        return 1;
-    RUN_TEST(test_bounds_never_cross_the_distance);
-    RUN_TEST(test_bounds_decide_near_the_measurement);
-    RUN_TEST(test_bounds_follow_the_vertex_that_overtakes);
-    RUN_TEST(test_bounds_after_the_cap_follow_a_line);
-    RUN_TEST(test_bounds_follow_a_body_sliding_over_a_wall);
-    RUN_TEST(test_bounds_follow_a_sphere_passing_a_sphere);
-    RUN_TEST(test_no_bounds_for_tumbling_or_capped_motion);
-    RUN_TEST(test_clear_never_passes_the_envelope);
-    RUN_TEST(test_a_box_reaches_as_far_as_its_vertices);
-    rc = test_summary();
+    return vrPolyhedron_Cube(vec3_make(0.15, 0.15, 0.15), &cube_poly, NULL, 0)
+        || vrPolyhedron_Cube(vec3_make(0.4, 0.3, 0.05), &plate_poly, NULL, 0);
+}
+
+static void free_polys(void)
+{
     vrPolyhedron_Free(cube_poly);
     vrPolyhedron_Free(plate_poly);
-    return rc;
 }
+
+static const vrTest tests[] = {
+    TEST(test_bounds_never_cross_the_distance),
+    TEST(test_bounds_decide_near_the_measurement),
+    TEST(test_bounds_follow_the_vertex_that_overtakes),
+    TEST(test_bounds_after_the_cap_follow_a_line),
+    TEST(test_bounds_follow_a_body_sliding_over_a_wall),
+    TEST(test_bounds_follow_a_sphere_passing_a_sphere),
+    TEST(test_no_bounds_for_tumbling_or_capped_motion),
+    TEST(test_clear_never_passes_the_envelope),
+    TEST(test_a_box_reaches_as_far_as_its_vertices),
+};
+
+const vrTestSuite vrSuite_Distbound = {"distbound", tests, TEST_COUNT(tests), make_polys, free_polys, 0};

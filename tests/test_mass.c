@@ -228,16 +228,15 @@ static int test_volume_centroid_follows_the_vertices_anywhere(void)
     return 0;
 }
 
-int main(int argc, char **argv)
-{
-    test_init(argc, argv);
-    RUN_TEST(test_box_mass_matches_the_closed_form);
-    RUN_TEST(test_box_inner_and_outer_radius);
-    RUN_TEST(test_sphere_mesh_mass_converges_to_the_ball);
-    RUN_TEST(test_superquadric_with_exponents_1_converges_to_the_ellipsoid);
-    RUN_TEST(test_off_tetrahedron_centroid_and_inertia_match_the_hand_formula);
-    RUN_TEST(test_principal_axes_of_a_turned_box_recover_its_sizes);
-    RUN_TEST(test_principal_handles_diagonal_repeated_and_negative_determinant_cases);
-    RUN_TEST(test_volume_centroid_follows_the_vertices_anywhere);
-    return test_summary();
-}
+static const vrTest tests[] = {
+    TEST(test_box_mass_matches_the_closed_form),
+    TEST(test_box_inner_and_outer_radius),
+    TEST(test_sphere_mesh_mass_converges_to_the_ball),
+    TEST(test_superquadric_with_exponents_1_converges_to_the_ellipsoid),
+    TEST(test_off_tetrahedron_centroid_and_inertia_match_the_hand_formula),
+    TEST(test_principal_axes_of_a_turned_box_recover_its_sizes),
+    TEST(test_principal_handles_diagonal_repeated_and_negative_determinant_cases),
+    TEST(test_volume_centroid_follows_the_vertices_anywhere),
+};
+
+const vrTestSuite vrSuite_Mass = {"mass", tests, TEST_COUNT(tests), NULL, NULL, 0};

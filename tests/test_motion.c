@@ -291,19 +291,18 @@ static int test_path_box_is_the_paths_extent(void)
     return 0;
 }
 
-int main(int argc, char **argv)
-{
-    test_init(argc, argv);
-    RUN_TEST(test_projectile_is_an_exact_parabola);
-    RUN_TEST(test_speed_cap_holds_velocity_constant);
-    RUN_TEST(test_max_angular_clamps_spin_at_anchor);
-    RUN_TEST(test_asymmetric_box_keeps_energy);
-    RUN_TEST(test_middle_axis_spin_flips);
-    RUN_TEST(test_symmetric_top_matches_integrator);
-    RUN_TEST(test_pose_is_pure_function_of_time);
-    RUN_TEST(test_a_still_body_has_one_pose_for_every_time);
-    RUN_TEST(test_isotropic_spin_is_exact);
-    RUN_TEST(test_an_isotropic_body_has_one_world_inertia);
-    RUN_TEST(test_path_box_is_the_paths_extent);
-    return test_summary();
-}
+static const vrTest tests[] = {
+    TEST(test_projectile_is_an_exact_parabola),
+    TEST(test_speed_cap_holds_velocity_constant),
+    TEST(test_max_angular_clamps_spin_at_anchor),
+    TEST(test_asymmetric_box_keeps_energy),
+    TEST(test_middle_axis_spin_flips),
+    TEST(test_symmetric_top_matches_integrator),
+    TEST(test_pose_is_pure_function_of_time),
+    TEST(test_a_still_body_has_one_pose_for_every_time),
+    TEST(test_isotropic_spin_is_exact),
+    TEST(test_an_isotropic_body_has_one_world_inertia),
+    TEST(test_path_box_is_the_paths_extent),
+};
+
+const vrTestSuite vrSuite_Motion = {"motion", tests, TEST_COUNT(tests), NULL, NULL, 0};

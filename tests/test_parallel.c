@@ -5,8 +5,9 @@
  * killed mid-run.
  *
  * UDP multicast runs only inside a private network namespace (nothing may
- * leave the machine): main() re-executes itself under `unshare -n` with a
- * multicast route on lo, and fails — never skips — when it cannot. */
+ * leave the machine): this suite is marked netns, so the runner (main.c)
+ * re-executes itself under `unshare -n` with a multicast route on lo
+ * (netns.h) before its first test, and fails — never skips — when it cannot. */
 #define _DEFAULT_SOURCE
 #include <signal.h>
 #include <stdlib.h>
@@ -17,19 +18,11 @@
 #include <lcm/lcm.h>
 #include <time.h>
 #include "vroc.h"
-#include "netns.h"
+#include "scene.h"
 
 #define UDPM "udpm://239.255.76.67:7667?ttl=0"
 
 typedef struct { unsigned long long hash; vrStats stats; char err[512]; int failed; double ms; } vrRun;
-
-static unsigned long long fnv(const char *s, size_t n)
-{
-    unsigned long long h = 1469598103934665603ULL;
-    size_t i;
-    for (i = 0; i < n; i++) h = (h ^ (unsigned char)s[i]) * 1099511628211ULL;
-    return h;
-}
 
 typedef void (*vrScene)(vrWorld *w);
 
@@ -47,29 +40,6 @@ static void random_60(vrWorld *w)
     vrWorld_AddRandom(w, 60, NULL, 0);
 }
 
-/* the hash of the world's dump */
-static unsigned long long dump_hash(vrWorld *w)
-{
-    char *buf = NULL;
-    size_t len = 0;
-    unsigned long long h;
-    FILE *f = open_memstream(&buf, &len);
-    vrWorld_WriteDump(w, f);
-    fclose(f);
-    h = fnv(buf, len);
-    free(buf);
-    return h;
-}
-
-/* a new object of definition d */
-static vrObjectId put(vrWorld *w, const char *name, vrObjectType type, const vrObjectDef *d)
-{
-    vrObjectId id;
-    vrWorld_CreateObject(w, name, type, &id, NULL, 0);
-    vrWorld_SetObjectDef(w, id, d, NULL, 0);
-    return id;
-}
-
 /* the hash of the dump after `frames` frames with `gps` workers */
 static vrRun run(vrScene scene, int gps, const char *url, vrDistribution dist, long frames)
 {
@@ -85,7 +55,7 @@ static vrRun run(vrScene scene, int gps, const char *url, vrDistribution dist, l
     vrWorld_SetSettings(w, &s, NULL, 0);
     r.failed = vrWorld_Step(w, frames, r.err, sizeof r.err) != 0;
     vrWorld_GetStats(w, &r.stats);
-    r.hash = dump_hash(w);
+    r.hash = vrScene_DumpHash(w);
     vrWorld_Destroy(w);
     return r;
 }
@@ -234,15 +204,15 @@ static void planks(vrWorld *w)
         d.translate[0] = 3.0 * i - 0.6; d.translate[2] = 0.5;
         d.mass = -1; d.mass_set = 1;
         snprintf(name, sizeof name, "l%d", i);
-        put(w, name, VR_CUBE, &d);
+        vrScene_Add(w, name, VR_CUBE, &d);
         d.translate[0] = 3.0 * i + 0.6;
         snprintf(name, sizeof name, "r%d", i);
-        put(w, name, VR_CUBE, &d);
+        vrScene_Add(w, name, VR_CUBE, &d);
         d.size[0] = 0.7; d.size[1] = 0.1; d.size[2] = 0.02;
         d.translate[0] = 3.0 * i + 0.02 * (i + 1); d.translate[2] = 1.3 + 0.1 * i;
         d.mass = 1; d.elasticity = 0.3;
         snprintf(name, sizeof name, "p%d", i);
-        put(w, name, VR_CUBE, &d);
+        vrScene_Add(w, name, VR_CUBE, &d);
     }
 }
 
@@ -276,7 +246,7 @@ static void tops(vrWorld *w)
     d.translate[2] = -0.05;
     d.mass = -1; d.mass_set = 1;
     d.elasticity = 0.8;
-    put(w, "floor", VR_CUBE, &d);
+    vrScene_Add(w, "floor", VR_CUBE, &d);
     for (i = 0; i < 9; i++) {
         char name[16];
         d = vrObjectDef_Default(i % 3 ? VR_SPHERE : VR_SUPERQUADRIC);
@@ -292,7 +262,7 @@ static void tops(vrWorld *w)
         d.mass = i % 3 ? 1 : 10; d.mass_set = 1;
         d.elasticity = i % 3 ? 0.9 : 0;
         snprintf(name, sizeof name, "%s%d", i % 3 ? "ball" : "top", i);
-        put(w, name, d.type, &d);
+        vrScene_Add(w, name, d.type, &d);
     }
 }
 
@@ -369,7 +339,7 @@ static void six_objects(vrWorld *w)
         snprintf(name, sizeof name, "o%d", i);
         d.radius = 0.1;
         d.translate[0] = 2.0 * i;
-        put(w, name, VR_SPHERE, &d);
+        vrScene_Add(w, name, VR_SPHERE, &d);
     }
 }
 
@@ -402,10 +372,10 @@ static int test_the_instant_cap_holds_across_frames(void)
         ball.mass_set = 1;
         far = ball;
         far.translate[0] = 2.5, far.translate[2] = 0.11, far.mass = 1;
-        put(w, "floor", VR_CUBE, &floor);
-        put(w, "plate", VR_CUBE, &plate);
-        put(w, "ball", VR_SPHERE, &ball);
-        spare = put(w, "spare", VR_SPHERE, &far);
+        vrScene_Add(w, "floor", VR_CUBE, &floor);
+        vrScene_Add(w, "plate", VR_CUBE, &plate);
+        vrScene_Add(w, "ball", VR_SPHERE, &ball);
+        spare = vrScene_Add(w, "spare", VR_SPHERE, &far);
         for (k = 0; k < 20; k++) {
             far.elasticity = k % 2 ? 0.5 : 0.6;      /* a new pair set for the workers, no new motion */
             vrWorld_SetObjectDef(w, spare, &far, NULL, 0);
@@ -414,7 +384,7 @@ static int test_the_instant_cap_holds_across_frames(void)
                 ENSURE_MSG(vrWorld_Step(w, 1, e_, sizeof e_) == 0, "frame %d, %s: %s", k, parallel ? "workers" : "serial", e_);
             }
         }
-        hash[parallel] = dump_hash(w);
+        hash[parallel] = vrScene_DumpHash(w);
         vrWorld_Destroy(w);
     }
     ENSURE(hash[0] == hash[1]);
@@ -448,7 +418,7 @@ static int test_counts_and_bits_survive_new_workers(void)
                        parallel ? "workers" : "serial", k, st.klu_solves, st.collisions);
         }
         ENSURE(st.collisions > 10);
-        hash[parallel] = dump_hash(w);
+        hash[parallel] = vrScene_DumpHash(w);
         vrWorld_Destroy(w);
     }
     ENSURE(hash[0] == hash[1]);
@@ -479,8 +449,8 @@ static int test_an_overlap_made_by_an_edit_stops_every_start(void)
         vrWorld_SetSettings(w, &s, NULL, 0);
         t.size[0] = 1, t.size[1] = 0.8, t.size[2] = 0.05, t.translate[2] = 0.5, t.mass = -1, t.mass_set = 1;
         b.radius = 0.1, b.translate[2] = 1;
-        table = put(w, "table", VR_CUBE, &t);
-        put(w, "ball", VR_SPHERE, &b);
+        table = vrScene_Add(w, "table", VR_CUBE, &t);
+        vrScene_Add(w, "ball", VR_SPHERE, &b);
         ENSURE(vrWorld_Step(w, 1, err, sizeof err) == 0);
         t.translate[2] = 0.95;
         vrWorld_SetObjectDef(w, table, &t, NULL, 0);
@@ -535,7 +505,7 @@ static void drifting(vrWorld *w)
         d.translate[0] = 3.0 * (i % 20);
         d.translate[1] = 3.0 * (i / 20);
         d.linear_vel[2] = 0.1;
-        put(w, name, VR_SPHERE, &d);
+        vrScene_Add(w, name, VR_SPHERE, &d);
     }
 }
 
@@ -554,28 +524,32 @@ static int test_messages_do_not_grow_with_objects(void)
     return 0;
 }
 
-int main(int argc, char **argv)
+/* the serial run every other is compared with */
+static int run_serial(void)
 {
-    enter_namespace(argc, argv);
-    test_init(argc, argv);
     if (getenv("VROC_BUILD")) build_dir = getenv("VROC_BUILD");
     serial_60 = run(random_60, 0, UDPM, VR_DIST_ROUND_ROBIN, 200);
     printf("    serial: %lld collisions, hash %016llx\n", serial_60.stats.collisions, serial_60.hash);
-    RUN_TEST(test_in_process_workers_match_serial_bit_for_bit);
-    RUN_TEST(test_forked_workers_over_udp_match_serial);
-    RUN_TEST(test_lost_and_duplicated_messages_change_nothing);
-    RUN_TEST(test_killed_worker_is_replaced_by_the_others);
-    RUN_TEST(test_silent_worker_in_process_is_replaced);
-    RUN_TEST(test_no_worker_left_is_a_clear_error);
-    RUN_TEST(test_foreign_and_malformed_messages_are_ignored);
-    RUN_TEST(test_joint_supports_match_serial);
-    RUN_TEST(test_touching_tops_match_serial);
-    RUN_TEST(test_an_overlap_made_by_an_edit_stops_every_start);
-    RUN_TEST(test_counts_and_bits_survive_new_workers);
-    RUN_TEST(test_the_instant_cap_holds_across_frames);
-    RUN_TEST(test_hand_started_workers_serve_a_ttl1_url);
-    RUN_TEST(test_improved_distribution_meets_thesis_example);
-    RUN_TEST(test_improved_distribution_needs_fewer_copies_on_random_60);
-    RUN_TEST(test_messages_do_not_grow_with_objects);
-    return test_summary();
+    return 0;
 }
+
+static const vrTest tests[] = {
+    TEST(test_in_process_workers_match_serial_bit_for_bit),
+    TEST(test_forked_workers_over_udp_match_serial),
+    TEST(test_lost_and_duplicated_messages_change_nothing),
+    TEST(test_killed_worker_is_replaced_by_the_others),
+    TEST(test_silent_worker_in_process_is_replaced),
+    TEST(test_no_worker_left_is_a_clear_error),
+    TEST(test_foreign_and_malformed_messages_are_ignored),
+    TEST(test_joint_supports_match_serial),
+    TEST(test_touching_tops_match_serial),
+    TEST(test_an_overlap_made_by_an_edit_stops_every_start),
+    TEST(test_counts_and_bits_survive_new_workers),
+    TEST(test_the_instant_cap_holds_across_frames),
+    TEST(test_hand_started_workers_serve_a_ttl1_url),
+    TEST(test_improved_distribution_meets_thesis_example),
+    TEST(test_improved_distribution_needs_fewer_copies_on_random_60),
+    TEST(test_messages_do_not_grow_with_objects),
+};
+
+const vrTestSuite vrSuite_Parallel = {"parallel", tests, TEST_COUNT(tests), run_serial, NULL, 1};

@@ -699,35 +699,38 @@ static void remove_tmpdir(void)
     rmdir(tmpdir);
 }
 
-int main(int argc, char **argv)
+static int make_tmpdir(void)
 {
-    test_init(argc, argv);
     snprintf(tmpdir, sizeof tmpdir, "/tmp/vroc-poly-XXXXXX");
     if (!mkdtemp(tmpdir)) {
         perror("mkdtemp");
         return 1;
     }
-    RUN_TEST(test_cube_has_8_vertices_12_edges_6_quads);
-    RUN_TEST(test_cube_feature_graph_is_consistent);
-    RUN_TEST(test_sphere_meshes_3x3_to_40x40_are_consistent_latlong_meshes);
-    RUN_TEST(test_sphere_mesh_vertices_are_on_the_sphere_with_radial_normals);
-    RUN_TEST(test_superquadric_graphs_are_consistent_for_all_exponents);
-    RUN_TEST(test_superquadric_poles_and_axis_samples_are_exact);
-    RUN_TEST(test_superquadric_exponent_2_merges_into_an_octahedron);
-    RUN_TEST(test_superquadric_exponent_005_keeps_every_sample_and_stays_convex);
-    RUN_TEST(test_hull_of_cube_corners_with_interior_face_edge_and_duplicate_points_is_the_cube);
-    RUN_TEST(test_hull_of_box_face_points_with_jitter_merges_into_six_quads);
-    RUN_TEST(test_hull_of_random_clouds_contains_every_point);
-    RUN_TEST(test_hull_of_cube_face_lattices_contains_every_point);
-    RUN_TEST(test_hull_of_cones_and_blurred_corners_contains_every_point);
-    RUN_TEST(test_hull_refuses_degenerate_input_with_a_message);
-    RUN_TEST(test_builders_refuse_bad_arguments);
-    RUN_TEST(test_off_reads_a_box_with_comments_colours_and_counts_on_the_header);
-    RUN_TEST(test_off_accepts_subdivided_faces_and_either_orientation);
-    RUN_TEST(test_off_refuses_missing_files_directories_and_malformed_text);
-    RUN_TEST(test_off_refuses_a_vertex_inside_the_hull);
-    RUN_TEST(test_off_refuses_faces_that_fold_inside_the_hull);
-    RUN_TEST(test_hull_timing_of_superquadrics_up_to_1000x1000);
-    remove_tmpdir();
-    return test_summary();
+    return 0;
 }
+
+static const vrTest tests[] = {
+    TEST(test_cube_has_8_vertices_12_edges_6_quads),
+    TEST(test_cube_feature_graph_is_consistent),
+    TEST(test_sphere_meshes_3x3_to_40x40_are_consistent_latlong_meshes),
+    TEST(test_sphere_mesh_vertices_are_on_the_sphere_with_radial_normals),
+    TEST(test_superquadric_graphs_are_consistent_for_all_exponents),
+    TEST(test_superquadric_poles_and_axis_samples_are_exact),
+    TEST(test_superquadric_exponent_2_merges_into_an_octahedron),
+    TEST(test_superquadric_exponent_005_keeps_every_sample_and_stays_convex),
+    TEST(test_hull_of_cube_corners_with_interior_face_edge_and_duplicate_points_is_the_cube),
+    TEST(test_hull_of_box_face_points_with_jitter_merges_into_six_quads),
+    TEST(test_hull_of_random_clouds_contains_every_point),
+    TEST(test_hull_of_cube_face_lattices_contains_every_point),
+    TEST(test_hull_of_cones_and_blurred_corners_contains_every_point),
+    TEST(test_hull_refuses_degenerate_input_with_a_message),
+    TEST(test_builders_refuse_bad_arguments),
+    TEST(test_off_reads_a_box_with_comments_colours_and_counts_on_the_header),
+    TEST(test_off_accepts_subdivided_faces_and_either_orientation),
+    TEST(test_off_refuses_missing_files_directories_and_malformed_text),
+    TEST(test_off_refuses_a_vertex_inside_the_hull),
+    TEST(test_off_refuses_faces_that_fold_inside_the_hull),
+    TEST(test_hull_timing_of_superquadrics_up_to_1000x1000),
+};
+
+const vrTestSuite vrSuite_Polyhedron = {"polyhedron", tests, TEST_COUNT(tests), make_tmpdir, remove_tmpdir, 0};

@@ -83,9 +83,8 @@ static int test_tree_gives_the_reach_of_every_body(void)
     return 0;
 }
 
-int main(int argc, char **argv)
-{
-    test_init(argc, argv);
-    RUN_TEST(test_tree_gives_the_reach_of_every_body);
-    return test_summary();
-}
+static const vrTest tests[] = {
+    TEST(test_tree_gives_the_reach_of_every_body),
+};
+
+const vrTestSuite vrSuite_Reach = {"reach", tests, TEST_COUNT(tests), NULL, NULL, 0};

@@ -15,6 +15,7 @@
 
 #include "test.h"
 #include "vroc.h"
+#include "scene.h"
 
 #define TEST_PI 3.14159265358979323846
 
@@ -35,30 +36,24 @@ static vrView test_view(int width, int height)
 static vrObjectId add_box(vrWorld *w, const char *name, const double c[3], const double h[3],
                           int r, int g, int b, int real)
 {
-    vrObjectId id = VR_NO_OBJECT;
-    vrObjectDef d;
+    vrObjectDef d = vrObjectDef_Default(VR_CUBE);
     int i;
-    if (vrWorld_CreateObject(w, name, VR_CUBE, &id, err, sizeof err)) return VR_NO_OBJECT;
-    vrWorld_GetObjectDef(w, id, &d);
     for (i = 0; i < 3; i++) d.translate[i] = c[i], d.size[i] = h[i];
     d.color[0] = r, d.color[1] = g, d.color[2] = b;
     d.mass = -1, d.mass_set = 1;
     d.real = real;
-    return vrWorld_SetObjectDef(w, id, &d, err, sizeof err) ? VR_NO_OBJECT : id;
+    return vrScene_Add(w, name, VR_CUBE, &d);
 }
 
 static vrObjectId add_sphere(vrWorld *w, const char *name, const double c[3], double radius,
                              int r, int g, int b)
 {
-    vrObjectId id = VR_NO_OBJECT;
-    vrObjectDef d;
+    vrObjectDef d = vrObjectDef_Default(VR_SPHERE);
     int i;
-    if (vrWorld_CreateObject(w, name, VR_SPHERE, &id, err, sizeof err)) return VR_NO_OBJECT;
-    vrWorld_GetObjectDef(w, id, &d);
     for (i = 0; i < 3; i++) d.translate[i] = c[i];
     d.radius = radius;
     d.color[0] = r, d.color[1] = g, d.color[2] = b;
-    return vrWorld_SetObjectDef(w, id, &d, err, sizeof err) ? VR_NO_OBJECT : id;
+    return vrScene_Add(w, name, VR_SPHERE, &d);
 }
 
 /* ---- pixels -------------------------------------------------------------- */
@@ -292,13 +287,15 @@ static int centre_color(double angle, int r, int g, int b, unsigned char out[3])
     double half[3] = {1, 1, 1}, c[3] = {0, 0, 0};
     vrObjectId id = add_box(s.w, "box", c, half, r, g, b, 0);
     vrObjectDef def;
+    const unsigned char *p;
     if (id == VR_NO_OBJECT) return -1;
     vrWorld_GetObjectDef(s.w, id, &def);
     def.rotate_axis[0] = 0, def.rotate_axis[1] = 0, def.rotate_axis[2] = 1;
     def.rotate_angle = angle, def.rotate_set = 1;
     s.v.ipd = 0;
     if (vrWorld_SetObjectDef(s.w, id, &def, err, sizeof err) || show(&s)) return -1;
-    memcpy(out, pixel(s.d, 0, 80, 64), 3);
+    p = pixel(s.d, 0, 80, 64);      /* byte by byte: LTO's memcpy check sees a display without pixels */
+    out[0] = p[0], out[1] = p[1], out[2] = p[2];
     done(&s);
     return 0;
 }
@@ -596,27 +593,26 @@ static int test_render_time_reaches_stats(void)
     return 0;
 }
 
-int main(int argc, char **argv)
-{
-    test_init(argc, argv);
+static const vrTest tests[] = {
     /* first: they need a process in which no display was opened yet */
-    RUN_TEST(test_world_without_display_does_not_load_osmesa);
-    RUN_TEST(test_missing_render_module_is_a_clear_error);
-    RUN_TEST(test_near_point_on_axis_has_crossed_disparity_of_predicted_size);
-    RUN_TEST(test_far_point_on_axis_has_uncrossed_disparity);
-    RUN_TEST(test_point_at_focal_distance_has_zero_disparity);
-    RUN_TEST(test_focal_setting_moves_the_zero_disparity_plane);
-    RUN_TEST(test_image_is_upright_and_not_mirrored);
-    RUN_TEST(test_face_toward_the_eye_shows_its_color);
-    RUN_TEST(test_tilted_face_is_lit_by_ambient_plus_diffuse_cosine);
-    RUN_TEST(test_sphere_is_smooth_shaded);
-    RUN_TEST(test_near_object_hides_far_one_in_either_order);
-    RUN_TEST(test_see_through_draws_real_objects_wire_hidden_or_solid);
-    RUN_TEST(test_real_object_hides_virtual_object_behind_it);
-    RUN_TEST(test_frames_are_well_formed_ppm_in_a_created_folder);
-    RUN_TEST(test_rendering_is_deterministic);
-    RUN_TEST(test_unwritable_frames_folder_is_a_clear_error);
-    RUN_TEST(test_bad_resolution_is_an_error_and_the_display_survives);
-    RUN_TEST(test_render_time_reaches_stats);
-    return test_summary();
-}
+    TEST(test_world_without_display_does_not_load_osmesa),
+    TEST(test_missing_render_module_is_a_clear_error),
+    TEST(test_near_point_on_axis_has_crossed_disparity_of_predicted_size),
+    TEST(test_far_point_on_axis_has_uncrossed_disparity),
+    TEST(test_point_at_focal_distance_has_zero_disparity),
+    TEST(test_focal_setting_moves_the_zero_disparity_plane),
+    TEST(test_image_is_upright_and_not_mirrored),
+    TEST(test_face_toward_the_eye_shows_its_color),
+    TEST(test_tilted_face_is_lit_by_ambient_plus_diffuse_cosine),
+    TEST(test_sphere_is_smooth_shaded),
+    TEST(test_near_object_hides_far_one_in_either_order),
+    TEST(test_see_through_draws_real_objects_wire_hidden_or_solid),
+    TEST(test_real_object_hides_virtual_object_behind_it),
+    TEST(test_frames_are_well_formed_ppm_in_a_created_folder),
+    TEST(test_rendering_is_deterministic),
+    TEST(test_unwritable_frames_folder_is_a_clear_error),
+    TEST(test_bad_resolution_is_an_error_and_the_display_survives),
+    TEST(test_render_time_reaches_stats),
+};
+
+const vrTestSuite vrSuite_Render = {"render", tests, TEST_COUNT(tests), NULL, NULL, 0};

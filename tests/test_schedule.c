@@ -5,6 +5,7 @@
 #include "test.h"
 #include "schedule.h"
 #include "owner.h"
+#include "scene.h"
 
 #define TEST_LCG_SEED 777ULL
 #include "test_lcg.h"
@@ -13,21 +14,9 @@ static vrPolyhedron *cube_poly;
 
 static void make_body(vrBody *b, int id, int sphere, int is_static)
 {
-    double h = 0.1 + 0.3 * uni();
-    mat33 unit;
-    memset(b, 0, sizeof *b);
-    b->id = id;
-    if (sphere) {
-        b->shape.kind = VR_SHAPE_SPHERE;
-        b->shape.radius = h;
-        unit = mat33_diag(0.4 * h * h, 0.4 * h * h, 0.4 * h * h);
-        vrBody_SetMassProperties(b, is_static ? -1 : 1, &unit, h, h);
-    } else {
-        b->shape.kind = VR_SHAPE_BOX;
-        b->shape.half = vec3_make(0.2, 0.2, 0.2);
-        b->shape.poly = cube_poly;
-        vrBody_SetMassProperties(b, is_static ? -1 : 1, &cube_poly->inertia_unit, cube_poly->r_in, cube_poly->r_out);
-    }
+    double h = 0.1 + 0.3 * uni();      /* drawn for a cube too: the same cases as ever */
+    if (sphere) vrScene_SphereBody(b, id, h, is_static);
+    else vrScene_BoxBody(b, id, cube_poly, vec3_make(0.2, 0.2, 0.2), is_static);
 }
 
 static double distance(vrBody *a, vrBody *b, double t, vrWalkCache *c, vec3 *n)
@@ -358,14 +347,9 @@ static int test_impact_times_of_spinning_boxes_are_48_halvings(void)
         int flat = trial % 4 == 0, on_cube = trial % 4 == 1;
         quat q = flat ? quat_identity() : quat_normalize(quat_make(sym(1), sym(1), sym(1), sym(1)));
         f.accel = vec3_make(0, 0, -9.8), f.max_linear = 50, f.max_angular = 100;
-        memset(&a, 0, sizeof a), memset(&b, 0, sizeof b);
-        a.id = 0, b.id = 1;
-        a.shape.kind = b.shape.kind = VR_SHAPE_BOX;
-        a.shape.half = on_cube ? vec3_make(0.15, 0.15, 0.15) : vec3_make(0.5, 0.5, 0.05);
-        a.shape.poly = on_cube ? cube : plate;
-        b.shape.half = vec3_make(0.15, 0.15, 0.15), b.shape.poly = cube;
-        vrBody_SetMassProperties(&a, on_cube ? 1 : -1, &a.shape.poly->inertia_unit, a.shape.poly->r_in, a.shape.poly->r_out);
-        vrBody_SetMassProperties(&b, 1, &cube->inertia_unit, cube->r_in, cube->r_out);
+        vrScene_BoxBody(&a, 0, on_cube ? cube : plate, on_cube ? vec3_make(0.15, 0.15, 0.15) : vec3_make(0.5, 0.5, 0.05),
+                        !on_cube);
+        vrScene_BoxBody(&b, 1, cube, vec3_make(0.15, 0.15, 0.15), 0);
         vrBody_Anchor(&a, 0, vec3_zero(), on_cube ? vec3_make(sym(1), sym(1), 2) : vec3_zero(), quat_identity(),
                       on_cube ? vec3_scale(rvec(1), 0.9) : vec3_zero(), &f);
         vrBody_Anchor(&b, 0, vec3_make(flat ? 0.5 + sym(0.14) : sym(0.3), sym(0.3), height),
@@ -539,18 +523,17 @@ static int test_support_on_a_sliding_body_keeps_momentum(void)
     return 0;
 }
 
-int main(int argc, char **argv)
-{
-    test_init(argc, argv);
-    RUN_TEST(test_key_never_overestimates);
-    RUN_TEST(test_sphere_keys_are_exact_for_free_pairs);
-    RUN_TEST(test_grid_follows_thesis_rule_without_spin);
-    RUN_TEST(test_impact_time_is_the_upper_end_after_48_halvings);
-    RUN_TEST(test_a_bisection_past_an_event_found_stops);
-    RUN_TEST(test_impact_times_of_spinning_boxes_are_48_halvings);
-    RUN_TEST(test_a_push_out_in_a_later_frame_is_no_hit);
-    RUN_TEST(test_the_start_check_looks_at_the_bodies_it_is_given);
-    RUN_TEST(test_a_push_out_does_not_drive_a_body_into_its_static_support);
-    RUN_TEST(test_support_on_a_sliding_body_keeps_momentum);
-    return test_summary();
-}
+static const vrTest tests[] = {
+    TEST(test_key_never_overestimates),
+    TEST(test_sphere_keys_are_exact_for_free_pairs),
+    TEST(test_grid_follows_thesis_rule_without_spin),
+    TEST(test_impact_time_is_the_upper_end_after_48_halvings),
+    TEST(test_a_bisection_past_an_event_found_stops),
+    TEST(test_impact_times_of_spinning_boxes_are_48_halvings),
+    TEST(test_a_push_out_in_a_later_frame_is_no_hit),
+    TEST(test_the_start_check_looks_at_the_bodies_it_is_given),
+    TEST(test_a_push_out_does_not_drive_a_body_into_its_static_support),
+    TEST(test_support_on_a_sliding_body_keeps_momentum),
+};
+
+const vrTestSuite vrSuite_Schedule = {"schedule", tests, TEST_COUNT(tests), NULL, NULL, 0};

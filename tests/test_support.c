@@ -66,9 +66,8 @@ out:
     return rc;
 }
 
-int main(int argc, char **argv)
-{
-    test_init(argc, argv);
-    RUN_TEST(test_face_shortcut_equals_the_search);
-    return test_summary();
-}
+static const vrTest tests[] = {
+    TEST(test_face_shortcut_equals_the_search),
+};
+
+const vrTestSuite vrSuite_Support = {"support", tests, TEST_COUNT(tests), NULL, NULL, 0};

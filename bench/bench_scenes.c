@@ -19,11 +19,11 @@
  *              second of simulation, against the thesis's 98 per GP
  *   peers      peer-random-100.cmd and peer-random-1000.cmd as they are
  *              (their own `step 600` / `step 60`, one `stats` added before
- *              it for the energy at frame 0); the 1000 one once (~1.5 min)
+ *              it for the energy at frame 0); the 1000 one once
  *
  * Prints the machine, the renderer, tables with the thesis's figures and
  * the issue's targets beside ours (met or not), and `csv,` lines; asserts
- * nothing.  Takes about three minutes.
+ * nothing.
  */
 #include <stddef.h>
 #include <stdio.h>
@@ -413,7 +413,7 @@ static double peer(const char *dir, const Peer *pe)
 
 static void peers(void)
 {
-    static const Peer list[] = {{"peer-random-100.cmd", RUNS, 1440, 860, 635},   /* a quarter second a run */
+    static const Peer list[] = {{"peer-random-100.cmd", RUNS, 1440, 860, 635},
                                 {"peer-random-1000.cmd", 1, 96, 42, 52}};
     const char *dir = getenv("VROC_PEER_BENCH");
     char path[512];

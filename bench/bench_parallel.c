@@ -2,7 +2,7 @@
  * second with 1, 2, 4 and 8 worker processes over UDP multicast, messages
  * and wall time per frame, objects and pairs per worker; the thesis scenes
  * (through ./vroc) and random 20..100; and the LCM round trip between two
- * processes.  Runs in a private network namespace (netns.h).
+ * processes.  Runs in a private network namespace (tests/netns.h).
  *
  * This machine has 2 cores: more workers than cores only adds messages.
  * The figures say how the protocol costs, not how Pixel-Planes 5 scaled. */
@@ -15,7 +15,7 @@
 #include <unistd.h>
 #include <lcm/lcm.h>
 #include "vroc.h"
-#include "netns.h"
+#include "../tests/netns.h"
 
 #define UDPM "udpm://239.255.76.67:7667?ttl=0"
 static const int workers[] = {0, 1, 2, 4, 8};

@@ -8,7 +8,7 @@
  *     issue's target;
  *   - the same draw in a 6 m room under gravity (a pile on the floor, dense
  *     collisions: a harder case, no target);
- *   - random 1000 in a 12 m room, a few frames (no broadphase yet).
+ *   - random 1000 in a 12 m room, a few frames.
  * Each figure is the median of REPEATS runs.  Prints a table and csv lines. */
 #include <stdlib.h>
 #include <string.h>
