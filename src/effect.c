@@ -59,7 +59,7 @@ static int respond_impulse(const vrResponding *o, const vrEvent *ev, vrUpdate *u
     vec3 v1, w1, v2, w2;
     impact_body(A, ev->t, ev->c, &ia);
     impact_body(B, ev->t, ev->c, &ib);
-    if (vrResponder_Solve(o->responder, &ia, &ib, ev->n, ev->e, &v1, &w1, &v2, &w2, NULL) != 0) return -1;
+    if (vrResponder_Solve(o->responder, &ia, &ib, ev->n, ev->e, 0, &v1, &w1, &v2, &w2, NULL) != 0) return -1;
     if (kick(o, up, A, ev, &ia, v1, w1) != 0 || kick(o, up, B, ev, &ib, v2, w2) != 0) return -1;
     return 0;
 }

@@ -1,6 +1,6 @@
-/* response.h — frictionless single-point collision response (thesis 3.2.2,
- * SPEC 3.4): the 15x15 linear system in v1', v2', w1', w2', R, solved with
- * SuiteSparse KLU. */
+/* response.h — single-point collision response (thesis 3.2.2, SPEC 3.4,
+ * with SPEC 7's Coulomb friction): the 15x15 linear system in v1', v2',
+ * w1', w2', R, solved with SuiteSparse KLU. */
 #ifndef VROC_RESPONSE_H
 #define VROC_RESPONSE_H
 
@@ -26,10 +26,11 @@ typedef struct vrResponseStats {
 vrResponder *vrResponder_Create(void);
 void vrResponder_Free(vrResponder *r);
 /* Solves the impulse of a contact with unit normal n (from body 1 toward
- * body 2) and restitution e; returns 0 and the velocities after, or -1 when
- * KLU fails even after a fresh factorisation. *impulse (may be NULL) gets R,
- * the impulse on body 1. */
-int vrResponder_Solve(vrResponder *r, const vrImpactBody *b1, const vrImpactBody *b2, vec3 n, double e,
+ * body 2), restitution e and friction mu (0: frictionless, the thesis's);
+ * returns 0 and the velocities after, or -1 when KLU fails even after a
+ * fresh factorisation. *impulse (may be NULL) gets R, the impulse on body
+ * 1.  With friction a response may take two or three solves. */
+int vrResponder_Solve(vrResponder *r, const vrImpactBody *b1, const vrImpactBody *b2, vec3 n, double e, double mu,
                       vec3 *v1, vec3 *w1, vec3 *v2, vec3 *w2, vec3 *impulse);
 vrResponseStats vrResponder_Stats(const vrResponder *r);
 
