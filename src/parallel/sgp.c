@@ -21,7 +21,9 @@
 #include <time.h>
 #include <unistd.h>
 #include "grow.h"
+#include "config.h"
 #include "link.h"
+#include "sgp.h"
 #include "wire.h"
 #include "worker.h"
 #include "vroc_advance_t.h"
@@ -285,12 +287,6 @@ static int exchange(vrSgp *s, int waiting, int target)
 
 /* ---- setup -------------------------------------------------------------------------------- */
 
-static int live_pairable(const vrWorld *w, int i, int j)
-{
-    const vrObject *a = w->obj[i], *b = w->obj[j];
-    return a && b && a->live && b->live && !(a->body.is_static && b->body.is_static);
-}
-
 /* SPEC 5 / thesis 6.4: which worker owns pair k of (i, j).  Round-robin
  * deals pairs in order; the improved distribution cuts the objects into m
  * groups and gives each worker whole blocks of pairs between groups, so a
@@ -345,7 +341,7 @@ static void assign_blocks(const long long *size, int m, int nalive, int *owner)
 
 static void deal_improved(const vrWorld *w, const int *alive, int nalive, int *pair_i, int *pair_j, vrDeal *d)
 {
-    int m = groups_for(nalive, w->nobj), per = (w->nobj + m - 1) / m, k;
+    int m = groups_for(nalive, w->table.n), per = (w->table.n + m - 1) / m, k;
     long long *size = calloc((size_t)(m * (m + 1) / 2), sizeof *size);
     int *owner = malloc((size_t)(m * (m + 1) / 2) * sizeof *owner);
     if (!size || !owner || m > 2 * MAX_GPS) {
@@ -366,9 +362,9 @@ static int deal(const vrWorld *w, const vrSgp *s, int **pi, int **pj, vrDeal *d)
         if (s->gp[i].alive) alive[nalive++] = i;
     *pi = malloc((size_t)cap * sizeof **pi);
     *pj = malloc((size_t)cap * sizeof **pj);
-    for (i = 0; *pi && *pj && i < w->nobj; i++)
-        for (j = i + 1; j < w->nobj; j++) {
-            if (!live_pairable(w, i, j)) continue;
+    for (i = 0; *pi && *pj && i < w->table.n; i++)
+        for (j = i + 1; j < w->table.n; j++) {
+            if (!vrTable_LivePair(&w->table, i, j)) continue;
             if (k == cap) {
                 int *a = realloc(*pi, (size_t)(cap *= 2) * sizeof *a), *b;
                 if (a) *pi = a;
@@ -405,10 +401,10 @@ static int encode_setup(vrWorld *w, vrSgp *s, int g, const int *pi, const int *p
     vrWireStates ws;
     vrUpdate states;
     vroc_body_def_t *defs;
-    char *need = calloc((size_t)w->nobj + 1, 1);
-    unsigned char *pending = vrWorld_PendingMarks(w);
+    char *need = calloc((size_t)w->table.n + 1, 1);
+    unsigned char *pending = vrTable_PendingMarks(&w->table, &w->pending);
     int k, i, np = 0, r = -1;
-    vrParams p = vrWorld_Params(w);
+    vrParams p = vrSettings_Params(&w->s);
     memset(&m, 0, sizeof m);
     memset(&ws, 0, sizeof ws);
     vrUpdate_Init(&states);
@@ -417,7 +413,7 @@ static int encode_setup(vrWorld *w, vrSgp *s, int g, const int *pi, const int *p
     m.a = malloc((size_t)(np + 1) * sizeof *m.a);
     m.b = malloc((size_t)(np + 1) * sizeof *m.b);
     m.flagged = malloc((size_t)(np + 1) * sizeof *m.flagged);
-    defs = calloc((size_t)w->nobj + 1, sizeof *defs);
+    defs = calloc((size_t)w->table.n + 1, sizeof *defs);
     if (need && pending && m.a && m.b && m.flagged && defs) {
         for (k = 0; k < d->npairs; k++)
             if (d->gp_of[k] == g) {
@@ -425,12 +421,12 @@ static int encode_setup(vrWorld *w, vrSgp *s, int g, const int *pi, const int *p
                 m.b[m.npairs] = pj[k];
                 m.flagged[m.npairs++] = pending[pi[k]] || pending[pj[k]];
             }
-        for (i = 0; i < w->nobj; i++)
+        for (i = 0; i < w->table.n; i++)
             if (need[i]) {
-                vrWire_PutDef(&defs[m.nbodies++], i, &w->obj[i]->def, w->obj[i]->off_text);
-                if (anchor_of(&states, &w->obj[i]->body) != 0) break;
+                vrWire_PutDef(&defs[m.nbodies++], i, &w->table.obj[i]->def, w->table.obj[i]->off_text);
+                if (anchor_of(&states, &w->table.obj[i]->body) != 0) break;
             }
-        if (i == w->nobj && vrWire_PutStates(&ws, &states) == 0) {
+        if (i == w->table.n && vrWire_PutStates(&ws, &states) == 0) {
             s->gp[g].pairs = m.npairs;
             m.run = s->run;
             m.seq = s->seq;
@@ -652,14 +648,14 @@ int vrSgp_Sync(vrWorld *w, char *err, size_t n)
 {
     vrSgp *s = w->sgp;
     if (s && (s->n != w->s.gps || strcmp(s->url, w->s.lcm_url) != 0)) {
-        vrWorld_RetireSgp(w);            /* its counts stay in the stats */
+        vrSgp_Retire(w);                 /* its counts stay in the stats */
         s = NULL;
     }
     if (!s) {
         w->sgp = s = open_sgp(w, err, n);
         if (!s) return -1;
     }
-    s->max_id = w->nobj;
+    s->max_id = w->table.n;
     return s->structure == w->structure ? 0 : setup_all(w, s, err, n);
 }
 
@@ -669,10 +665,10 @@ int vrSgp_Sync(vrWorld *w, char *err, size_t n)
 static int recover(vrWorld *w, char *err, size_t n)
 {
     vrSgp *s = w->sgp;
-    vrFlight f = vrWorld_Flight(w);
+    vrFlight f = vrSettings_Flight(&w->s);
     int i;
     for (i = 0; i < s->snap.n; i++)
-        vrBody_Apply(&w->obj[s->snap.body[i].id]->body, &s->snap.body[i], &f);
+        vrBody_Apply(&w->table.obj[s->snap.body[i].id]->body, &s->snap.body[i], &f);
     w->collisions = s->snap_collisions;
     for (i = 0; i < s->n; i++) {   /* the frame is redone: what it counted is counted again */
         s->gp[i].before = s->snap_counts[i];
@@ -689,8 +685,8 @@ static void snapshot(vrWorld *w, vrSgp *s)
 {
     int i;
     s->snap.n = 0;
-    for (i = 0; i < w->nobj; i++)
-        if (w->obj[i] && w->obj[i]->live) anchor_of(&s->snap, &w->obj[i]->body);
+    for (i = 0; i < w->table.n; i++)
+        if (w->table.obj[i] && w->table.obj[i]->live) anchor_of(&s->snap, &w->table.obj[i]->body);
     s->snap_collisions = w->collisions;
     for (i = 0; i < s->n; i++) s->snap_counts[i] = counts_of(s, i);
 }
@@ -849,9 +845,9 @@ static int sgp_candidates(vrWorld *w, double T, const unsigned char *want, vrCan
     vroc_contacts_t m;
     int i, k = 0, r;
     memset(&m, 0, sizeof m);
-    m.want = malloc((size_t)w->nobj * sizeof *m.want + 1);
+    m.want = malloc((size_t)w->table.n * sizeof *m.want + 1);
     if (!m.want) return snprintf(err, n, "out of memory"), -1;
-    for (i = 0; i < w->nobj; i++)
+    for (i = 0; i < w->table.n; i++)
         if (want[i]) m.want[k++] = i;
     m.nwant = k;
     m.run = s->run;
@@ -895,6 +891,20 @@ void vrSgp_Stats(const vrSgp *s, vrStats *st)
         st->klu_factors += c.factors;
         if (g->alive) st->copies += g->copies;
     }
+}
+
+void vrSgp_Retire(vrWorld *w)
+{
+    vrStats st;
+    memset(&st, 0, sizeof st);
+    vrSgp_Stats(w->sgp, &st);
+    w->retired.checks += st.checks;
+    w->retired.heap_pops += st.heap_pops;
+    w->retired.response.solves += st.klu_solves;
+    w->retired.response.refactors += st.klu_refactors;
+    w->retired.response.factors += st.klu_factors;
+    vrSgp_Free(w->sgp);
+    w->sgp = NULL;
 }
 
 int vrWorker_Run(const char *url, char *err, size_t n)

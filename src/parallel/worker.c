@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "build.h"
+#include "table.h"
 #include "worker.h"
 #include "wire.h"
 #include "vroc_advance_t.h"
@@ -29,7 +31,7 @@ struct vrWorker {
     int gp;
     vrBuf reply;                  /* the last answer, for repeated requests */
     const char *reply_channel;
-    vrWorld *world;               /* its objects (defs and bodies) */
+    vrTable objects;              /* the objects of its pairs, at the SGP's ids */
     vrOwner *owner;
     vrParams params;
     vrEvent first;                /* the first event it last reported */
@@ -116,7 +118,7 @@ static void beat(void *ctx)
 
 static int held(const vrWorker *k, int id)
 {
-    vrObject *o = vrWorld_Object(k->world, id);
+    vrObject *o = vrTable_Get(&k->objects, id);
     return o && o->built;
 }
 
@@ -136,7 +138,7 @@ static int apply_states(vrWorker *k, const vroc_body_state_t *states, int n)
     for (i = 0; i < k->scratch.n; i++) {
         const vrBodyState *st = &k->scratch.body[i];
         if (!held(k, st->id)) continue;
-        vrBody_Apply(&vrWorld_Object(k->world, st->id)->body, st, &k->params.flight);
+        vrBody_Apply(&vrTable_Get(&k->objects, st->id)->body, st, &k->params.flight);
         k->ids[nid++] = st->id;
     }
     vrOwner_BodiesChanged(k->owner, k->ids, nid);
@@ -149,21 +151,22 @@ static int build(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
 {
     int i;
     if (vrWire_GetParams(&m->params, &k->params) != 0) return snprintf(err, n, "bad settings"), -1;
-    vrWorld_Restart(k->world);
+    vrTable_Clear(&k->objects);
     vrOwner_Free(k->owner);
     k->owner = NULL;
     for (i = 0; i < m->nbodies; i++) {
         vrObjectDef d;
         if (vrWire_GetDef(&m->defs[i], &d) != 0) return snprintf(err, n, "bad object definition"), -1;
-        if (vrWorld_PutObject(k->world, m->defs[i].id, &d, m->defs[i].off, err, n) != 0) return -1;
+        if (vrTable_Put(&k->objects, m->defs[i].id, &d, m->defs[i].off, err, n) != 0) return -1;
     }
-    if (vrWorld_Ready(k->world, err, n) != 0) return -1;
+    for (i = 0; i < k->objects.n; i++)   /* placed: their states follow */
+        if (k->objects.obj[i] && vrObject_Ready(k->objects.obj[i], m->t, &k->params.flight, err, n) != 0) return -1;
     k->owner = vrOwner_Create();
     if (!k->owner) return snprintf(err, n, "out of memory"), -1;
     vrOwner_SetParams(k->owner, &k->params);
     vrOwner_SetProgress(k->owner, beat, k);
     for (i = 0; i < m->nbodies; i++) {
-        vrObject *o = vrWorld_Object(k->world, m->defs[i].id);
+        vrObject *o = vrTable_Get(&k->objects, m->defs[i].id);
         if (vrOwner_HoldBody(k->owner, o->body.id, &o->body) != 0) return snprintf(err, n, "out of memory"), -1;
     }
     if (apply_states(k, m->states, m->nbodies) != 0) return snprintf(err, n, "bad body state"), -1;
@@ -392,7 +395,6 @@ vrWorker *vrWorker_Create(vrLink *link, long long nonce, int forked)
     k->parent = getppid();
     k->gp = -1;
     k->last_seq = k->reply_seq = -1;
-    k->world = vrWorld_Create();
     vrUpdate_Init(&k->scratch);
     parse_kill(k);
     k->subs[0] = lcm_subscribe(link->lcm, VR_CH_SETUP, on_setup, k);
@@ -401,7 +403,7 @@ vrWorker *vrWorker_Create(vrLink *link, long long nonce, int forked)
     k->subs[3] = lcm_subscribe(link->lcm, VR_CH_FORWARD, on_forward, k);
     k->subs[4] = lcm_subscribe(link->lcm, VR_CH_SHUTDOWN, on_shutdown, k);
     k->subs[5] = lcm_subscribe(link->lcm, VR_CH_CONTACTS, on_contacts, k);
-    if (!k->world || !k->subs[0] || !k->subs[1] || !k->subs[2] || !k->subs[3] || !k->subs[4] || !k->subs[5]) {
+    if (!k->subs[0] || !k->subs[1] || !k->subs[2] || !k->subs[3] || !k->subs[4] || !k->subs[5]) {
         vrWorker_Free(k);
         return NULL;
     }
@@ -415,7 +417,7 @@ void vrWorker_Free(vrWorker *k)
     for (i = 0; i < 6; i++)
         if (k->subs[i]) lcm_unsubscribe(k->link->lcm, k->subs[i]);
     vrOwner_Free(k->owner);
-    vrWorld_Destroy(k->world);
+    vrTable_Free(&k->objects);
     vrUpdate_Free(&k->scratch);
     vrBuf_Free(&k->reply);
     free(k->ids);
