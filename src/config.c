@@ -61,7 +61,7 @@ int vrSettings_Check(const vrSettings *s, char *err, size_t n)
     if (s->heap != 0 && s->heap != 1) return vrGeom_Fail(err, n, "%s must be 0 or 1 (got %g)", "heap", (double)s->heap);
     if (s->max_frames < 0) return vrGeom_Fail(err, n, "%s must be >= 0 (got %g)", "max_frames", (double)s->max_frames);
     if (bad_range(s->room, 0, 1e6, 0)) return vrGeom_Fail(err, n, "%s must be >= 0 (got %g)", "room", s->room);
-    if (s->gps < 0 || s->gps > 64) return vrGeom_Fail(err, n, "%s must be 0..64 (got %g)", "gps", (double)s->gps);
+    if (s->gps < 0 || s->gps > VR_MAX_GPS) return vrGeom_Fail(err, n, "%s must be 0..%d (got %g)", "gps", VR_MAX_GPS, (double)s->gps);
     if (bad_range(s->collision_vol, 0, 1, 0)) return vrGeom_Fail(err, n, "%s must be 0..1 (got %g)", "collision_vol", s->collision_vol);
     return 0;
 }

@@ -7,6 +7,9 @@
 #include "vroc.h"
 #include "gp.h"
 
+/* the most workers (the `gps` setting's range) */
+#define VR_MAX_GPS 64
+
 /* 0, or an error in err (the setting or field named) and -1 */
 int vrSettings_Check(const vrSettings *s, char *err, size_t n);
 int vrObjectDef_Check(const vrObjectDef *d, char *err, size_t n);

@@ -8,7 +8,7 @@
 #include <string.h>
 #include "config.h"
 #include "world.h"
-#include "parallel/sgp.h"
+#include "parallel/spawn.h"
 
 vrWorld *vrWorld_Create(void)
 {

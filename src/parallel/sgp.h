@@ -11,7 +11,6 @@ extern const vrOwnerSet vrSgp_Owners;
 int vrSgp_Sync(vrWorld *w, char *err, size_t n);
 /* frees the SGP and its workers, their counts kept in the stats */
 void vrSgp_Retire(vrWorld *w);
-void vrSgp_Free(vrSgp *s);
 /* adds the workers' counts to st */
 void vrSgp_Stats(const vrSgp *s, vrStats *st);
 
