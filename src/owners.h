@@ -4,7 +4,7 @@
 #ifndef VROC_OWNERS_H
 #define VROC_OWNERS_H
 
-#include "world.h"
+#include "world_state.h"
 #include "ownerset.h"
 
 /* serial or parallel, as the settings say: the owners made or re-set */

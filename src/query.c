@@ -8,7 +8,7 @@
 #include <string.h>
 #include "build.h"
 #include "config.h"
-#include "world.h"
+#include "world_state.h"
 #include "parallel/sgp.h"
 
 static int ready(vrWorld *w, vrObject *o)

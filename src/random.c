@@ -8,7 +8,7 @@
  *   add_one        the next sphere or cube: position, rotation, velocities
  */
 #include <string.h>
-#include "world.h"
+#include "world_state.h"
 
 #define SPHERE_RADIUS 0.2
 #define CUBE_HALF 0.15

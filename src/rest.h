@@ -3,7 +3,7 @@
 #ifndef VROC_REST_H
 #define VROC_REST_H
 
-#include "world.h"
+#include "world_state.h"
 #include "ownerset.h"
 
 /* bodies resting on a changed body wake, transitively (SPEC 3.5) */

@@ -5,7 +5,7 @@
 #ifndef VROC_START_H
 #define VROC_START_H
 
-#include "world.h"
+#include "world_state.h"
 
 /* objects not yet in the simulation join it: their states go out as
  * changes, so that their pairs are evaluated at the next span start */

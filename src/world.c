@@ -1,13 +1,13 @@
 /* world.c — a world's life (create, restart, destroy), its settings, and
  * its objects by name and id as include/vroc.h shows them.  The frame
- * loop is loop.c; world.h lists the coordinator's files.
+ * loop is loop.c; world_state.h lists the coordinator's files.
  *
  *   clear_objects  every object goes, and the pairs with them
  */
 #include <stdlib.h>
 #include <string.h>
 #include "config.h"
-#include "world.h"
+#include "world_state.h"
 #include "parallel/spawn.h"
 
 vrWorld *vrWorld_Create(void)

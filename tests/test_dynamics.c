@@ -6,7 +6,7 @@
 #include "test.h"
 #include "vroc.h"
 #include "vec.h"
-#include "world.h"
+#include "world_state.h"
 #define TEST_LCG_SEED 20261126ULL
 #include "test_lcg.h"
 

@@ -3,7 +3,7 @@
 #ifndef VROC_SGP_H
 #define VROC_SGP_H
 
-#include "world.h"
+#include "world_state.h"
 #include "ownerset.h"
 
 extern const vrOwnerSet vrSgp_Owners;

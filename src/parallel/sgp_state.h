@@ -8,7 +8,7 @@
 
 #include <sys/types.h>
 #include "config.h"
-#include "world.h"
+#include "world_state.h"
 #include "link.h"
 #include "worker.h"
 

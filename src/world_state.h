@@ -1,20 +1,23 @@
-/* world.h — the coordinator's state (ARCHITECTURE "the loop, once"): the
- * objects, the settings, the clock, the owners of the pairs and what they
- * have not heard yet.  The shell never sees this: it uses include/vroc.h.
+/* world_state.h — the coordinator's state (ARCHITECTURE "the loop, once"):
+ * the objects, the settings, the clock, the owners of the pairs and what
+ * they have not heard yet.  The shell never sees this: it uses
+ * include/vroc.h.  It is a header of its own, apart from world.c (the
+ * world's life cycle, which frees the workers), because the floors below
+ * that file need this state.
  *
- * The coordinator's files, from the floor up (a file calls only what is
+ * The coordinator's files, from the floor up (each calls only what is
  * below it):
- *   config.c table.c build.c   settings and definitions; the object table;
- *                              an object built from its definition
- *   world.h ownerset.h         this state; what the coordinator asks of owners
- *   rest.c  parallel/          rest (SPEC 3.5); the workers' owner set (SGP)
- *   owners.c                   the owner choice and the serial owner set
- *   start.c                    a start: objects go live, owners come to date
- *   loop.c edit.c query.c      the frame loop; live edits; the getters
- *   world.c random.c output.c  life cycle; `random`; `dump` and `stats`
+ *   config.c table.c build.c    settings and definitions; the object table;
+ *                               an object built from its definition
+ *   world_state.h ownerset.h    this state; what the coordinator asks of owners
+ *   rest.c, parallel/sgp.c      rest (SPEC 3.5); the workers as an owner set
+ *   owners.c                    the owner choice and the serial owner set
+ *   start.c                     a start: objects go live, owners come to date
+ *   loop.c edit.c query.c       the frame loop; live edits; the getters
+ *   world.c random.c output.c   life cycle; `random`; `dump` and `stats`
  */
-#ifndef VROC_WORLD_H
-#define VROC_WORLD_H
+#ifndef VROC_WORLD_STATE_H
+#define VROC_WORLD_STATE_H
 
 #include "vroc.h"
 #include "gp.h"
