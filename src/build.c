@@ -6,8 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "build.h"
-
-static vec3 v3(const double a[3]) { return vec3_make(a[0], a[1], a[2]); }
+#include "config.h"
 
 double vrObjectDef_Mass(const vrObjectDef *d) { return d->mass_set ? d->mass : d->volume; }
 
@@ -60,7 +59,7 @@ static int make_polyhedron(vrObject *o, char *err, size_t n)
     case VR_SPHERE:
         return vrPolyhedron_Sphere(d->radius, d->ures, d->vres, &o->poly, err, n);
     case VR_CUBE:
-        return vrPolyhedron_Cube(v3(d->size), &o->poly, err, n);
+        return vrPolyhedron_Cube(vrVec3_Of(d->size), &o->poly, err, n);
     case VR_SUPERQUADRIC:
         return vrPolyhedron_Superquadric(d->exp1, d->exp2, vec3_make(d->a1, d->a2, d->a3), d->ures, d->vres,
                                          &o->poly, err, n);
@@ -93,7 +92,7 @@ int vrObject_Build(vrObject *o, char *err, size_t n)
         rin = rout = d->radius;
     } else {
         sh->kind = d->type == VR_CUBE ? VR_SHAPE_BOX : VR_SHAPE_POLY;
-        sh->half = v3(d->size);
+        sh->half = vrVec3_Of(d->size);
         sh->poly = o->poly;
         unit = o->poly->inertia_unit;
         rin = o->poly->r_in;
@@ -109,7 +108,7 @@ int vrObject_Build(vrObject *o, char *err, size_t n)
 quat vrObjectDef_Orientation(const vrObjectDef *d)
 {
     if (!d->rotate_set) return quat_identity();
-    return quat_from_axis_angle(vec3_normalize(v3(d->rotate_axis)), d->rotate_angle);
+    return quat_from_axis_angle(vec3_normalize(vrVec3_Of(d->rotate_axis)), d->rotate_angle);
 }
 
 vec3 vrBody_MomentumAt(const vrBody *b, quat q, vec3 omega)
@@ -125,8 +124,8 @@ void vrObject_Place(vrObject *o, double t, const vrFlight *f)
     o->body.resting = 0;
     o->body.nsupport = 0;
     o->body.hit = 0;
-    vrBody_Anchor(&o->body, t, v3(o->def.translate), v3(o->def.linear_vel), q,
-                  vrBody_MomentumAt(&o->body, q, v3(o->def.angular_vel)), f);
+    vrBody_Anchor(&o->body, t, vrVec3_Of(o->def.translate), vrVec3_Of(o->def.linear_vel), q,
+                  vrBody_MomentumAt(&o->body, q, vrVec3_Of(o->def.angular_vel)), f);
     o->have_frame_pose = 0;
 }
 

@@ -1,12 +1,11 @@
 /* config.c — settings and object definitions: defaults, checks, and the
  * parameters the settings give the pair owners.
  *
- *   bad_range   outside [lo, hi] (or at lo when lo is open), or not finite
+ *   bad_range     outside [lo, hi] (or at lo when lo is open), or not finite
+ *   out_of_range  the error "what must be range (got v)"
  */
 #include <string.h>
 #include "config.h"
-
-static vec3 v3(const double a[3]) { return vec3_make(a[0], a[1], a[2]); }
 
 vrObjectDef vrObjectDef_Default(vrObjectType type)
 {
@@ -48,53 +47,59 @@ static int bad_range(double v, double lo, double hi, int lo_open)
     return !isfinite(v) || v > hi || v < lo || (lo_open && v == lo);
 }
 
+static int out_of_range(char *err, size_t n, const char *what, const char *range, double v)
+{
+    return vrGeom_Fail(err, n, "%s must be %s (got %g)", what, range, v);
+}
+
 int vrSettings_Check(const vrSettings *s, char *err, size_t n)
 {
-    vec3 f = v3(s->force_dir);
-    if (bad_range(s->time_step, 0, 1e9, 0)) return vrGeom_Fail(err, n, "%s must be >= 0 (got %g)", "time_step", s->time_step);
-    if (bad_range(s->collision_dist, 0, 1e9, 1)) return vrGeom_Fail(err, n, "%s must be > 0 (got %g)", "collision_dist", s->collision_dist);
-    if (bad_range(s->internal_step, 0, 1e9, 0)) return vrGeom_Fail(err, n, "%s must be >= 0 (got %g)", "internal_step", s->internal_step);
-    if (bad_range(s->max_linear, 0, 1e9, 1)) return vrGeom_Fail(err, n, "%s must be > 0 (got %g)", "max_linear", s->max_linear);
-    if (bad_range(s->max_angular, 0, 1e9, 1)) return vrGeom_Fail(err, n, "%s must be > 0 (got %g)", "max_angular", s->max_angular);
+    vec3 f = vrVec3_Of(s->force_dir);
+    if (bad_range(s->time_step, 0, 1e9, 0)) return out_of_range(err, n, "time_step", ">= 0", s->time_step);
+    if (bad_range(s->collision_dist, 0, 1e9, 1)) return out_of_range(err, n, "collision_dist", "> 0", s->collision_dist);
+    if (bad_range(s->internal_step, 0, 1e9, 0)) return out_of_range(err, n, "internal_step", ">= 0", s->internal_step);
+    if (bad_range(s->max_linear, 0, 1e9, 1)) return out_of_range(err, n, "max_linear", "> 0", s->max_linear);
+    if (bad_range(s->max_angular, 0, 1e9, 1)) return out_of_range(err, n, "max_angular", "> 0", s->max_angular);
     if (!vec3_isfinite(f) || vec3_len2(f) == 0) return vrGeom_Fail(err, n, "force direction must be a non-zero vector");
-    if (bad_range(s->force_mag, 0, 1e9, 0)) return vrGeom_Fail(err, n, "%s magnitude must be >= 0 (got %g)", "force", s->force_mag);
-    if (s->heap != 0 && s->heap != 1) return vrGeom_Fail(err, n, "%s must be 0 or 1 (got %g)", "heap", (double)s->heap);
-    if (s->max_frames < 0) return vrGeom_Fail(err, n, "%s must be >= 0 (got %g)", "max_frames", (double)s->max_frames);
-    if (bad_range(s->room, 0, 1e6, 0)) return vrGeom_Fail(err, n, "%s must be >= 0 (got %g)", "room", s->room);
+    if (bad_range(s->force_mag, 0, 1e9, 0)) return out_of_range(err, n, "force magnitude", ">= 0", s->force_mag);
+    if (s->heap != 0 && s->heap != 1) return out_of_range(err, n, "heap", "0 or 1", s->heap);
+    if (s->max_frames < 0) return out_of_range(err, n, "max_frames", ">= 0", s->max_frames);
+    if (bad_range(s->room, 0, 1e6, 0)) return out_of_range(err, n, "room", ">= 0", s->room);
     if (s->gps < 0 || s->gps > VR_MAX_GPS) return vrGeom_Fail(err, n, "%s must be 0..%d (got %g)", "gps", VR_MAX_GPS, (double)s->gps);
-    if (bad_range(s->collision_vol, 0, 1, 0)) return vrGeom_Fail(err, n, "%s must be 0..1 (got %g)", "collision_vol", s->collision_vol);
+    if (bad_range(s->collision_vol, 0, 1, 0)) return out_of_range(err, n, "collision_vol", "0..1", s->collision_vol);
     return 0;
 }
 
 int vrObjectDef_Check(const vrObjectDef *d, char *err, size_t n)
 {
+    vec3 axis = vrVec3_Of(d->rotate_axis);
     int i;
     for (i = 0; i < 3; i++) {
         if (!isfinite(d->linear_vel[i]) || !isfinite(d->angular_vel[i]) || !isfinite(d->translate[i]))
             return vrGeom_Fail(err, n, "vectors must be finite");
-        if (d->color[i] < 0 || d->color[i] > 255) return vrGeom_Fail(err, n, "%s must be 0..255 (got %g)", "color", (double)d->color[i]);
-        if (bad_range(d->size[i], 0, 1e9, 1)) return vrGeom_Fail(err, n, "%s must be > 0 (got %g)", "size", d->size[i]);
+        if (d->color[i] < 0 || d->color[i] > 255) return out_of_range(err, n, "color", "0..255", d->color[i]);
+        if (bad_range(d->size[i], 0, 1e9, 1)) return out_of_range(err, n, "size", "> 0", d->size[i]);
     }
-    if (bad_range(d->elasticity, 0, 1, 0)) return vrGeom_Fail(err, n, "%s must be 0..1 (got %g)", "elasticity", d->elasticity);
-    if (!isfinite(d->mass) || d->mass == 0) return vrGeom_Fail(err, n, "%s must be non-zero (got %g)", "mass", d->mass);
-    if (bad_range(d->volume, 0, 1e12, 1)) return vrGeom_Fail(err, n, "%s must be > 0 (got %g)", "volume", d->volume);
-    if (d->rotate_set && (!isfinite(d->rotate_angle) || !vec3_isfinite(v3(d->rotate_axis)) || vec3_len2(v3(d->rotate_axis)) == 0))
+    if (bad_range(d->elasticity, 0, 1, 0)) return out_of_range(err, n, "elasticity", "0..1", d->elasticity);
+    if (!isfinite(d->mass) || d->mass == 0) return out_of_range(err, n, "mass", "non-zero", d->mass);
+    if (bad_range(d->volume, 0, 1e12, 1)) return out_of_range(err, n, "volume", "> 0", d->volume);
+    if (d->rotate_set && (!isfinite(d->rotate_angle) || !vec3_isfinite(axis) || vec3_len2(axis) == 0))
         return vrGeom_Fail(err, n, "rotate axis must be a non-zero vector");
-    if (bad_range(d->radius, 0, 1e9, 1)) return vrGeom_Fail(err, n, "%s must be > 0 (got %g)", "radius", d->radius);
-    if (d->ures < 3 || d->ures > 1000) return vrGeom_Fail(err, n, "%s must be 3..1000 (got %g)", "ures", (double)d->ures);
-    if (d->vres < 3 || d->vres > 1000) return vrGeom_Fail(err, n, "%s must be 3..1000 (got %g)", "vres", (double)d->vres);
-    if (bad_range(d->exp1, 0.05, 2, 0)) return vrGeom_Fail(err, n, "%s must be 0.05..2 (got %g)", "exp1", d->exp1);
-    if (bad_range(d->exp2, 0.05, 2, 0)) return vrGeom_Fail(err, n, "%s must be 0.05..2 (got %g)", "exp2", d->exp2);
-    if (bad_range(d->a1, 0, 1e9, 1)) return vrGeom_Fail(err, n, "%s must be > 0 (got %g)", "a1", d->a1);
-    if (bad_range(d->a2, 0, 1e9, 1)) return vrGeom_Fail(err, n, "%s must be > 0 (got %g)", "a2", d->a2);
-    if (bad_range(d->a3, 0, 1e9, 1)) return vrGeom_Fail(err, n, "%s must be > 0 (got %g)", "a3", d->a3);
+    if (bad_range(d->radius, 0, 1e9, 1)) return out_of_range(err, n, "radius", "> 0", d->radius);
+    if (d->ures < 3 || d->ures > 1000) return out_of_range(err, n, "ures", "3..1000", d->ures);
+    if (d->vres < 3 || d->vres > 1000) return out_of_range(err, n, "vres", "3..1000", d->vres);
+    if (bad_range(d->exp1, 0.05, 2, 0)) return out_of_range(err, n, "exp1", "0.05..2", d->exp1);
+    if (bad_range(d->exp2, 0.05, 2, 0)) return out_of_range(err, n, "exp2", "0.05..2", d->exp2);
+    if (bad_range(d->a1, 0, 1e9, 1)) return out_of_range(err, n, "a1", "> 0", d->a1);
+    if (bad_range(d->a2, 0, 1e9, 1)) return out_of_range(err, n, "a2", "> 0", d->a2);
+    if (bad_range(d->a3, 0, 1e9, 1)) return out_of_range(err, n, "a3", "> 0", d->a3);
     return 0;
 }
 
 vrFlight vrSettings_Flight(const vrSettings *s)
 {
     vrFlight f;
-    f.accel = vec3_scale(vec3_normalize(v3(s->force_dir)), s->force_mag);
+    f.accel = vec3_scale(vec3_normalize(vrVec3_Of(s->force_dir)), s->force_mag);
     f.max_linear = s->max_linear;
     f.max_angular = s->max_angular;
     return f;

@@ -7,6 +7,9 @@
 #include "vroc.h"
 #include "gp.h"
 
+/* a definition's or a setting's vector (double[3]) as a vec3 */
+static inline vec3 vrVec3_Of(const double a[3]) { return vec3_make(a[0], a[1], a[2]); }
+
 /* the most workers (the `gps` setting's range) */
 #define VR_MAX_GPS 64
 

@@ -9,10 +9,9 @@
  */
 #include <string.h>
 #include "build.h"
+#include "config.h"
 #include "owners.h"
 #include "start.h"
-
-static vec3 v3(const double a[3]) { return vec3_make(a[0], a[1], a[2]); }
 
 static int motion_edited(const vrObjectDef *a, const vrObjectDef *b)
 {
@@ -86,12 +85,12 @@ static int apply_live_edit(vrWorld *w, vrObject *o, const vrObjectDef *old, char
     st = vrUpdate_Body(&w->update, &o->body, w->t);
     if (!st) return vrGeom_Fail(err, n, "out of memory");
     if (!o->built && vrObject_Build(o, err, n) != 0) return -1;
-    if (memcmp(old->translate, o->def.translate, sizeof old->translate) != 0) st->x = v3(o->def.translate);
+    if (memcmp(old->translate, o->def.translate, sizeof old->translate) != 0) st->x = vrVec3_Of(o->def.translate);
     if (old->rotate_set != o->def.rotate_set || old->rotate_angle != o->def.rotate_angle
         || memcmp(old->rotate_axis, o->def.rotate_axis, sizeof old->rotate_axis) != 0)
         st->q = vrObjectDef_Orientation(&o->def);
-    if (memcmp(old->linear_vel, o->def.linear_vel, sizeof old->linear_vel) != 0) st->v = v3(o->def.linear_vel);
-    if (memcmp(old->angular_vel, o->def.angular_vel, sizeof old->angular_vel) != 0) omega = v3(o->def.angular_vel);
+    if (memcmp(old->linear_vel, o->def.linear_vel, sizeof old->linear_vel) != 0) st->v = vrVec3_Of(o->def.linear_vel);
+    if (memcmp(old->angular_vel, o->def.angular_vel, sizeof old->angular_vel) != 0) omega = vrVec3_Of(o->def.angular_vel);
     st->L = vrBody_MomentumAt(&o->body, st->q, omega);
     st->resting = 0;
     st->nsupport = 0;
