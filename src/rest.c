@@ -7,6 +7,12 @@
  * or resting): a frictionless body does not ride on a sliding one.  A
  * resting body wakes when a response involves it or a support changes;
  * waking anything wakes what rests on it.
+ *
+ *   qualifies     may this body rest now?
+ *   wanted        the bodies several contacts together may carry
+ *   carried       is the centre of mass over all their regions together?
+ *   settle_joint  the normal relative velocity goes, momentum kept
+ *   decide        one body's candidates: support by them together begins or ends
  */
 #include <stdlib.h>
 #include <string.h>
