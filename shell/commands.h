@@ -112,7 +112,7 @@ int run_start(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_stop(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_step(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_restart(Shell *sh, const Stmt *st, char *err, size_t n);
-/* display.c */
+/* frames.c */
 int run_display(Shell *sh, const Stmt *st, char *err, size_t n);
 /* source.c */
 int run_read(Shell *sh, const Stmt *st, char *err, size_t n);

@@ -76,7 +76,7 @@ double sh_frame_wait(const Shell *sh);
 int sh_tick(Shell *sh, char *err, size_t n);
 extern volatile sig_atomic_t sh_interrupted;   /* SIGINT: stop a long `step` */
 
-/* display.c: the display glue (SPEC 4) */
+/* frames.c: the frames drawn and written (SPEC 4) */
 int sh_display_open(Shell *sh, char *err, size_t n);
 int sh_display_draw(Shell *sh, char *err, size_t n);
 void sh_display_close(Shell *sh);

@@ -5,7 +5,7 @@
  * (render.h) draws them; the pixels are written as binary PPM.  No OSMesa
  * symbol is referenced here: the module is dlopen()ed on the first
  * vrDisplay_Open, so that a run without a display never loads OSMesa and
- * LLVM (~30 ms per process start).
+ * the LLVM it pulls in (a cost at every process start).
  *
  * Where the module is looked for, first found wins:
  *   $VROC_RENDER_MODULE (a path to the .so; when set, the only place looked)

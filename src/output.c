@@ -2,7 +2,7 @@
  * Tests and benchmarks read these lines: keys are added, never renamed. */
 #include <stdlib.h>
 #include <string.h>
-#include "world.h"
+#include "vroc.h"
 
 void vrFormatDouble(char buf[32], double x)
 {

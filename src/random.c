@@ -1,27 +1,21 @@
 /* random.c — `random N` and `room = s` (SPEC 1.2): the thesis's table 5.6
- * environment, drawn from a splitmix64 stream so that a seed always gives
- * the same scene and benchmarks mean something. */
-#include <stdint.h>
+ * environment, drawn from the world's seeded stream (splitmix.h) so that a
+ * seed always gives the same scene and benchmarks mean something.  It
+ * builds the scene through the public calls, as a user would.
+ *
+ *   make_room      six static walls around the interior
+ *   free_spot      is a bounding sphere clear of the objects placed so far?
+ *   add_one        the next sphere or cube: position, rotation, velocities
+ */
 #include <string.h>
-#include "world.h"
+#include "world_state.h"
 
 #define SPHERE_RADIUS 0.2
 #define CUBE_HALF 0.15
 #define MAX_TRIES 1000000
 #define WALL 0.5            /* wall thickness */
 
-void vrRandom_Seed(vrWorld *w) { w->rng = w->s.seed; }
-
-/* splitmix64 (Steele, Lea, Flood 2014) */
-static uint64_t next(vrWorld *w)
-{
-    uint64_t z = (w->rng += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-static double uniform(vrWorld *w) { return (double)(next(w) >> 11) * (1.0 / 9007199254740992.0); }
+static double uniform(vrWorld *w) { return vrSplitmix_Uniform(&w->rng); }
 
 /* uniform in the ball of radius r, by rejection from the cube */
 static vec3 in_ball(vrWorld *w, double r)
@@ -81,8 +75,8 @@ static int free_spot(vrWorld *w, vec3 c, double r, double gap)
 {
     int i;
     vrObjectState st;
-    for (i = 0; i < w->nobj; i++) {
-        vrObject *o = w->obj[i];
+    for (i = 0; i < w->table.n; i++) {
+        vrObject *o = w->table.obj[i];
         if (!o || is_wall(o->name) || vrWorld_GetObjectState(w, i, &st) != 0) continue;
         if (vec3_dist(c, vec3_make(st.position[0], st.position[1], st.position[2])) < r + o->body.r_out + gap)
             return 0;

@@ -7,11 +7,17 @@
  * or resting): a frictionless body does not ride on a sliding one.  A
  * resting body wakes when a response involves it or a support changes;
  * waking anything wakes what rests on it.
+ *
+ *   qualifies     may this body rest now?
+ *   wanted        the bodies several contacts together may carry
+ *   carried       is the centre of mass over all their regions together?
+ *   settle_joint  the normal relative velocity goes, momentum kept
+ *   decide        one body's candidates: support by them together begins or ends
  */
-#include "world.h"
-
 #include <stdlib.h>
 #include <string.h>
+#include "config.h"
+#include "rest.h"
 
 #define REST_DISPLACEMENT 1e-4   /* m per frame */
 #define CONTAIN_TOL 1e-9         /* m */
@@ -39,8 +45,8 @@ int vrRest_WakeDependents(vrWorld *w, vrUpdate *up, double t)
     if (w->may_rest == 0) return 0;     /* nothing rests: no look at every object */
     for (k = 0; k < up->n; k++) {
         int id = up->body[k].id;
-        for (i = 0; i < w->nobj; i++) {
-            vrObject *x = w->obj[i];
+        for (i = 0; i < w->table.n; i++) {
+            vrObject *x = w->table.obj[i];
             vrBodyState *st;
             if (!x || !x->live || !x->body.resting || !rests_on(&x->body, id) || in_update(up, i)) continue;
             st = vrUpdate_Body(up, &x->body, t);
@@ -54,7 +60,7 @@ int vrRest_WakeDependents(vrWorld *w, vrUpdate *up, double t)
 /* frozen now, or about to rest in this same update */
 static int frozen_support(const vrWorld *w, const vrUpdate *up, int id)
 {
-    const vrObject *o = w->obj[id];
+    const vrObject *o = w->table.obj[id];
     const vrBodyState *st = in_update(up, id);
     return o && (o->body.is_static || o->body.resting || (st && st->resting));
 }
@@ -78,14 +84,14 @@ int vrRest_FrameEnd(vrWorld *w, vrUpdate *up)
     int more = 1, i;
     while (more) {              /* a stack comes to rest from the bottom up */
         more = 0;
-        for (i = 0; i < w->nobj; i++) {
-            vrObject *o = w->obj[i];
+        for (i = 0; i < w->table.n; i++) {
+            vrObject *o = w->table.obj[i];
             vrBodyState *st;
             if (!o || !qualifies(w, up, o)) continue;
             st = vrUpdate_Body(up, &o->body, w->t);
             if (!st) return -1;
             st->resting = 1;
-            w->may_rest = w->nobj;      /* counted again once applied */
+            w->may_rest = w->table.n;      /* counted again once applied */
             more = 1;
         }
     }
@@ -96,8 +102,8 @@ void vrRest_RememberFramePoses(vrWorld *w)
 {
     int i;
     w->may_rest = 0;
-    for (i = 0; i < w->nobj; i++) {
-        vrObject *o = w->obj[i];
+    for (i = 0; i < w->table.n; i++) {
+        vrObject *o = w->table.obj[i];
         if (!o || !o->live || o->body.is_static) continue;
         w->may_rest += o->body.resting;
         vrBody_Pose(&o->body, w->t, &o->frame_pose);
@@ -120,13 +126,13 @@ static int joint_supports(const vrBody *b)
  * contacts together (are they still?) */
 static unsigned char *wanted(const vrWorld *w, int *count)
 {
-    unsigned char *want = calloc((size_t)w->nobj + 1, 1);
+    unsigned char *want = calloc((size_t)w->table.n + 1, 1);
     int i;
     *count = 0;
-    for (i = 0; want && i < w->nobj; i++) {
+    for (i = 0; want && i < w->table.n; i++) {
         const vrBody *b;
-        if (!w->obj[i] || !w->obj[i]->live) continue;
-        b = &w->obj[i]->body;
+        if (!w->table.obj[i] || !w->table.obj[i]->live) continue;
+        b = &w->table.obj[i]->body;
         if (b->is_static || b->resting) continue;
         if (!((b->nsupport == 0 && b->hit) || joint_supports(b) > 0)) continue;
         want[i] = 1;
@@ -156,7 +162,7 @@ static int carried(vrWorld *w, const vrCandidate *c, int k, vec3 g, double T)
         memcpy(pts + n, c[i].point, (size_t)c[i].npoints * sizeof *pts);
         n += c[i].npoints;
     }
-    vrBody_Pose(&w->obj[c[0].body]->body, T, &p);
+    vrBody_Pose(&w->table.obj[c[0].body]->body, T, &p);
     com = p.p;
     inside = vrRegion_Contains(pts, n, vec3_normalize(g), com, CONTAIN_TOL);
     free(pts);
@@ -171,7 +177,7 @@ static int carried(vrWorld *w, const vrCandidate *c, int k, vec3 g, double T)
  * nowhere). */
 static int settle_joint(vrWorld *w, vrUpdate *up, vrBody *b, double T, const vrCandidate *c)
 {
-    vrBody *y = &w->obj[c->partner]->body;
+    vrBody *y = &w->table.obj[c->partner]->body;
     int moving = vrBody_IsFree(y);
     vrBodyState *st, *sy;
     double share = moving ? b->inv_mass / (b->inv_mass + y->inv_mass) : 1, along;
@@ -197,7 +203,7 @@ static int support_all(vrWorld *w, vrUpdate *up, vrBody *b, double T, const vrCa
         st->support[st->nsupport].partner = c[i].partner;
         st->support[st->nsupport].n = c[i].n;
         st->support[st->nsupport].joint = 1;
-        st->support[st->nsupport].fixed = w->obj[c[i].partner]->body.is_static;
+        st->support[st->nsupport].fixed = w->table.obj[c[i].partner]->body.is_static;
         st->nsupport++;
     }
     return 0;
@@ -218,7 +224,7 @@ static int drop_joint(vrUpdate *up, vrBody *b, double T)
 /* one body and its candidates: keep, begin or end support by them together */
 static int decide(vrWorld *w, vrUpdate *up, double T, vec3 g, const vrCandidate *c, int k)
 {
-    vrBody *b = &w->obj[c[0].body]->body;
+    vrBody *b = &w->table.obj[c[0].body]->body;
     int held = joint_supports(b) > 0, carry = k >= 2 && carried(w, c, k, g, T);
     if (held && !carry) return drop_joint(up, b, T);
     if (!held && carry) return support_all(w, up, b, T, c, k);
@@ -228,7 +234,7 @@ static int decide(vrWorld *w, vrUpdate *up, double T, vec3 g, const vrCandidate 
 int vrRest_SeveralSupports(vrWorld *w, double T, const vrOwnerSet *owners, vrUpdate *up, char *err, size_t n)
 {
     vrCandidates list = {0, 0, NULL};
-    vec3 g = vrWorld_Flight(w).accel;
+    vec3 g = vrSettings_Flight(&w->s).accel;
     unsigned char *want;
     int count, i, j, r = 0;
     if (vec3_len2(g) == 0) return 0;
@@ -247,8 +253,8 @@ int vrRest_SeveralSupports(vrWorld *w, double T, const vrOwnerSet *owners, vrUpd
         r = decide(w, up, T, g, list.c + i, j - i);
     }
     /* jointly carried bodies with no candidate left at all */
-    for (i = 0; i < w->nobj && r == 0; i++) {
-        vrObject *o = w->obj[i];
+    for (i = 0; i < w->table.n && r == 0; i++) {
+        vrObject *o = w->table.obj[i];
         int k;
         if (!o || !o->live || o->body.resting || joint_supports(&o->body) == 0) continue;
         for (k = 0; k < list.n && list.c[k].body != i; k++)

@@ -288,7 +288,7 @@ done
 
 # ---- a crowded room: several impacts in one internal step ----
 # 30 bodies thrown about a 3 m room under gravity: at many grid points an
-# impact is found and others are looked at around it (gp.c: bisections past
+# impact is found and others are looked at around it (bisect.c: bisections past
 # it stop, and the keys found there are dropped, as they are rolled back); some
 # of those looks find an earlier impact, which must win as it does when
 # every pair is looked at in index order (heap = 0)

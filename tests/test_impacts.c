@@ -6,7 +6,7 @@
 #include "test.h"
 #include "vroc.h"
 #include "vec.h"
-#include "world.h"
+#include "world_state.h"
 #include "scene.h"
 
 /* ---- bouncing --------------------------------------------------------------- */

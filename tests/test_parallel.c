@@ -229,7 +229,7 @@ static int test_joint_supports_match_serial(void)
 
 /* pinched superquadrics spinning on their tips (never supported: their
  * tips touch the floor between grid points, answered at the touching
- * moment, gp.c touch) among bouncing balls (impacts bisected to before
+ * moment, pair_events.c's touch) among bouncing balls (impacts bisected to before
  * the grid points where the tops overlap); the heap on and off, and
  * workers, must agree on every bit */
 static void tops(vrWorld *w)

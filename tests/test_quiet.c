@@ -1,4 +1,4 @@
-/* test_quiet.c — the quiet proofs of gp.c (quiet_slide, quiet_support,
+/* test_quiet.c — the quiet proofs of quiet.c (quiet_slide, quiet_support,
  * quiet_horizon): a slide or support contact that cannot change before the
  * frame ends, or for several frames, is looked at about once a frame or
  * once in several, and the run gives the same bits as heap = 0, which
@@ -12,7 +12,7 @@
  * spinning at 30 rad/s far away makes the internal steps fine (some 300 a
  * frame): the two contacts cannot change before the frame ends until the
  * ball nears the table's edge, so with the heap they are looked at about
- * once a frame (gp.c's quiet_slide), and the run gives the same bits as
+ * once a frame (quiet.c's quiet_slide), and the run gives the same bits as
  * heap = 0, which looks at them at every step. */
 static vrWorld *quiet_scene(int heap)
 {
@@ -57,7 +57,7 @@ static int test_quiet_slides_cost_a_check_a_frame_and_no_bit(void)
  * spinning at 30 rad/s far away makes the internal steps fine: a support
  * contact cannot change before the frame ends while the box's footprint
  * stays over the face and nothing tilts it, so with the heap it is looked
- * at about once a frame (gp.c's quiet_support), and the run gives the same
+ * at about once a frame (quiet.c's quiet_support), and the run gives the same
  * bits as heap = 0.  One cube slides off the table's edge mid-frame (its
  * support ends at a grid point, it tips over the edge through contact
  * impulses and falls); a flat asymmetric box turns (the integrator's
@@ -100,7 +100,7 @@ static int test_quiet_supports_cost_a_check_a_frame_and_no_bit(void)
  * table, 100 frames a second: nothing can change for many frames, so with
  * the heap each contact is proved quiet QUIET_AHEAD (0.1 s) past the
  * frame's end and looked at about once in ten frames, not at every frame's
- * start (gp.c's quiet_horizon), and the run gives the same bits as heap =
+ * start (quiet.c's quiet_horizon), and the run gives the same bits as heap =
  * 0, which looks at both at every internal step. */
 static vrWorld *slow_slide_scene(int heap)
 {

@@ -12,6 +12,14 @@ double vrLink_NowMs(void)
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
+long long vrLink_NewId(void)
+{
+    double t = vrLink_NowMs();
+    unsigned long long r = (unsigned long long)getpid() << 32 ^ (unsigned long long)(t * 1e3);
+    r = (r ^ (r >> 31)) * 0x9e3779b97f4a7c15ULL;
+    return (long long)(r >> 2) | 1;      /* positive and never 0 (0 means free) */
+}
+
 static double percent_env(const char *name)
 {
     const char *v = getenv(name);

@@ -25,6 +25,8 @@ int vrLink_Publish(vrLink *l, const char *channel, const void *data, int len);
 /* waits up to ms for messages and dispatches them to the subscribers */
 int vrLink_Handle(vrLink *l, int ms);
 double vrLink_NowMs(void);
+/* an id for a run or a worker, from the process id and the clock: positive, never 0 */
+long long vrLink_NewId(void);
 
 /* an encoded message kept for sending (and resending) */
 typedef struct vrBuf { void *data; int len, cap; } vrBuf;
@@ -35,6 +37,23 @@ void vrBuf_Free(vrBuf *b);
 #define VR_ENCODE(b, T, msg)                                                             \
     (vrBuf_Reserve((b), T##_encoded_size(msg)) != 0 ? -1                                 \
      : ((b)->len = T##_encode((b)->data, 0, (b)->cap, (msg))) < 0 ? -1 : 0)
+
+/* Defines `static void name(...)`, an LCM subscriber for messages of the
+ * generated type T whose user data is a Ctx *: the message is decoded,
+ * given to take(ctx, &msg) and freed; one that does not decode goes to
+ * malformed(ctx) instead.  (Receivers subscribe raw: see above.) */
+#define VR_HANDLER(name, T, Ctx, take, malformed)                                        \
+    static void name(const lcm_recv_buf_t *rb, const char *channel, void *user)          \
+    {                                                                                    \
+        T msg;                                                                           \
+        (void)channel;                                                                   \
+        if (T##_decode(rb->data, 0, (int)rb->data_size, &msg) < 0) {                     \
+            malformed((Ctx *)user);                                                      \
+            return;                                                                      \
+        }                                                                                \
+        take((Ctx *)user, &msg);                                                         \
+        T##_decode_cleanup(&msg);                                                        \
+    }
 
 #define VR_CH_HELLO "VROC_HELLO"
 #define VR_CH_SETUP "VROC_SETUP"

@@ -4,8 +4,8 @@
 #ifndef VROC_WIRE_H
 #define VROC_WIRE_H
 
+#include "vroc.h"
 #include "owner.h"
-#include "world.h"
 #include "vroc_body_def_t.h"
 #include "vroc_body_state_t.h"
 #include "vroc_grid_t.h"

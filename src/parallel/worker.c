@@ -1,11 +1,22 @@
 /* worker.c — a GP: the thesis's Graphic Processor, a pair owner driven by
  * the SGP's messages (SPEC 5).  It holds copies of the objects of its pairs
- * (built from their definitions by the same code as the SGP's, so every
- * copy moves the same bits) and one vrOwner over its pairs. */
+ * in a table of its own (built from their definitions by the same code as
+ * the SGP's, build.h, so every copy moves the same bits) and one vrOwner
+ * over its pairs.
+ *
+ *   fresh          a new request, or a repeat answered from the cache
+ *   beat           a heartbeat while a long look-ahead keeps it busy
+ *   apply_states   the SGP's states onto the bodies held here
+ *   set_up         a setup's objects and pairs
+ *   maybe_die      VROC_FAULT_KILL, for the tests of a dying worker
+ *   take_*         a request of each kind (the VR_HANDLER callbacks)
+ */
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "build.h"
+#include "table.h"
 #include "worker.h"
 #include "wire.h"
 #include "vroc_advance_t.h"
@@ -29,7 +40,7 @@ struct vrWorker {
     int gp;
     vrBuf reply;                  /* the last answer, for repeated requests */
     const char *reply_channel;
-    vrWorld *world;               /* its objects (defs and bodies) */
+    vrTable objects;              /* the objects of its pairs, at the SGP's ids */
     vrOwner *owner;
     vrParams params;
     vrEvent first;                /* the first event it last reported */
@@ -116,7 +127,7 @@ static void beat(void *ctx)
 
 static int held(const vrWorker *k, int id)
 {
-    vrObject *o = vrWorld_Object(k->world, id);
+    vrObject *o = vrTable_Get(&k->objects, id);
     return o && o->built;
 }
 
@@ -136,7 +147,7 @@ static int apply_states(vrWorker *k, const vroc_body_state_t *states, int n)
     for (i = 0; i < k->scratch.n; i++) {
         const vrBodyState *st = &k->scratch.body[i];
         if (!held(k, st->id)) continue;
-        vrBody_Apply(&vrWorld_Object(k->world, st->id)->body, st, &k->params.flight);
+        vrBody_Apply(&vrTable_Get(&k->objects, st->id)->body, st, &k->params.flight);
         k->ids[nid++] = st->id;
     }
     vrOwner_BodiesChanged(k->owner, k->ids, nid);
@@ -145,25 +156,26 @@ static int apply_states(vrWorker *k, const vroc_body_state_t *states, int n)
 
 /* the objects and pairs of a setup: built from definitions, placed at
  * their states, pairs settled from the poses or flagged */
-static int build(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
+static int set_up(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
 {
     int i;
     if (vrWire_GetParams(&m->params, &k->params) != 0) return snprintf(err, n, "bad settings"), -1;
-    vrWorld_Restart(k->world);
+    vrTable_Clear(&k->objects);
     vrOwner_Free(k->owner);
     k->owner = NULL;
     for (i = 0; i < m->nbodies; i++) {
         vrObjectDef d;
         if (vrWire_GetDef(&m->defs[i], &d) != 0) return snprintf(err, n, "bad object definition"), -1;
-        if (vrWorld_PutObject(k->world, m->defs[i].id, &d, m->defs[i].off, err, n) != 0) return -1;
+        if (vrTable_Put(&k->objects, m->defs[i].id, &d, m->defs[i].off, err, n) != 0) return -1;
     }
-    if (vrWorld_Ready(k->world, err, n) != 0) return -1;
+    for (i = 0; i < k->objects.n; i++)   /* placed: their states follow */
+        if (k->objects.obj[i] && vrObject_Ready(k->objects.obj[i], m->t, &k->params.flight, err, n) != 0) return -1;
     k->owner = vrOwner_Create();
     if (!k->owner) return snprintf(err, n, "out of memory"), -1;
     vrOwner_SetParams(k->owner, &k->params);
     vrOwner_SetProgress(k->owner, beat, k);
     for (i = 0; i < m->nbodies; i++) {
-        vrObject *o = vrWorld_Object(k->world, m->defs[i].id);
+        vrObject *o = vrTable_Get(&k->objects, m->defs[i].id);
         if (vrOwner_HoldBody(k->owner, o->body.id, &o->body) != 0) return snprintf(err, n, "out of memory"), -1;
     }
     if (apply_states(k, m->states, m->nbodies) != 0) return snprintf(err, n, "bad body state"), -1;
@@ -215,26 +227,20 @@ static void check_overlaps(vrWorker *k, int64_t seq, double t, const int32_t *ow
     free(b);
 }
 
-static void on_setup(const lcm_recv_buf_t *rb, const char *ch, void *user)
+static void take_setup(vrWorker *k, const vroc_setup_t *m)
 {
-    vrWorker *k = user;
-    vroc_setup_t m;
     char err[256] = "";
-    (void)ch;
-    if (vroc_setup_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
-    if (m.nonce == k->nonce && !k->silent) {
-        if (m.run != k->run) {           /* a new run claims this worker */
-            k->run = m.run;
-            k->last_seq = k->reply_seq = -1;
-            k->frames = 0;
-        }
-        if (fresh(k, m.run, m.seq)) {
-            k->gp = m.gp;
-            if (build(k, &m, err, sizeof err) != 0 && !err[0]) strcpy(err, "setup failed");
-            send_earliest(k, m.seq, 0, NULL, 0, NULL, NULL, err[0] ? err : NULL);
-        }
+    if (m->nonce != k->nonce || k->silent) return;
+    if (m->run != k->run) {              /* a new run claims this worker */
+        k->run = m->run;
+        k->last_seq = k->reply_seq = -1;
+        k->frames = 0;
     }
-    vroc_setup_t_decode_cleanup(&m);
+    if (fresh(k, m->run, m->seq)) {
+        k->gp = m->gp;
+        if (set_up(k, m, err, sizeof err) != 0 && !err[0]) strcpy(err, "setup failed");
+        send_earliest(k, m->seq, 0, NULL, 0, NULL, NULL, err[0] ? err : NULL);
+    }
 }
 
 /* VROC_FAULT_KILL=gp:frame[:round] — the worker dies at that frame's
@@ -246,44 +252,33 @@ static void maybe_die(vrWorker *k)
     k->silent = 1;                       /* in one process: fall silent instead */
 }
 
-static void on_frame(const lcm_recv_buf_t *rb, const char *ch, void *user)
+static void take_frame(vrWorker *k, const vroc_frame_start_t *m)
 {
-    vrWorker *k = user;
-    vroc_frame_start_t m;
-    (void)ch;
-    if (vroc_frame_start_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
-    if (k->owner && fresh(k, m.run, m.seq) && isfinite(m.t)) {
-        if (!m.check) {
-            k->frames++;
-            k->rounds = 0;
-            maybe_die(k);
-        }
-        if (!k->silent) {
-            vrOwner_Advance(k->owner, m.t);
-            if (apply_states(k, m.states, m.nstates) != 0) send_earliest(k, m.seq, 0, NULL, 0, NULL, NULL, "bad body state");
-            else if (m.check) check_overlaps(k, m.seq, m.t, m.owed, m.nowed);
-            else look_ahead(k, m.seq, &m.grid, m.allow_instant);
-        }
+    if (!k->owner || !fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
+    if (!m->check) {
+        k->frames++;
+        k->rounds = 0;
+        maybe_die(k);
     }
-    vroc_frame_start_t_decode_cleanup(&m);
+    if (k->silent) return;
+    vrOwner_Advance(k->owner, m->t);
+    if (apply_states(k, m->states, m->nstates) != 0) send_earliest(k, m->seq, 0, NULL, 0, NULL, NULL, "bad body state");
+    else if (m->check) check_overlaps(k, m->seq, m->t, m->owed, m->nowed);
+    else look_ahead(k, m->seq, &m->grid, m->allow_instant);
 }
 
-static void on_advance(const lcm_recv_buf_t *rb, const char *ch, void *user)
+static void take_advance(vrWorker *k, const vroc_advance_t *m)
 {
-    vrWorker *k = user;
-    vroc_advance_t m;
     vroc_update_t u;
     vrWireStates ws;
     vrResponseStats rs;
     vrOwnerStats os;
-    (void)ch;
-    if (vroc_advance_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
-    if (!k->owner || !fresh(k, m.run, m.seq)) return;
+    if (!k->owner || !fresh(k, m->run, m->seq)) return;
     k->rounds++;
     maybe_die(k);
-    if (k->silent || m.responder != k->gp) return;
-    if (!k->has_first || k->first.order != m.order || k->first.t != m.t) return;
-    vrOwner_Advance(k->owner, m.t);
+    if (k->silent || m->responder != k->gp) return;
+    if (!k->has_first || k->first.order != m->order || k->first.t != m->t) return;
+    vrOwner_Advance(k->owner, m->t);
     k->scratch.n = 0;
     if (vrOwner_Respond(k->owner, &k->first, &k->scratch) != 0) return;   /* silence: the SGP gives up on us */
     memset(&u, 0, sizeof u);
@@ -291,32 +286,26 @@ static void on_advance(const lcm_recv_buf_t *rb, const char *ch, void *user)
     vrOwner_Stats(k->owner, &os);
     rs = os.response;
     u.run = k->run;
-    u.seq = m.seq;
+    u.seq = m->seq;
     u.gp = k->gp;
-    u.t = m.t;
+    u.t = m->t;
     u.solves = rs.solves;
     u.refactors = rs.refactors;
     u.factors = rs.factors;
     if (vrWire_PutStates(&ws, &k->scratch) == 0) {
         u.nstates = ws.n;
         u.states = ws.m;
-        if (VR_ENCODE(&k->reply, vroc_update_t, &u) == 0) answer(k, VR_CH_UPDATE, m.seq);
+        if (VR_ENCODE(&k->reply, vroc_update_t, &u) == 0) answer(k, VR_CH_UPDATE, m->seq);
     }
     vrWire_FreeStates(&ws);
 }
 
-static void on_forward(const lcm_recv_buf_t *rb, const char *ch, void *user)
+static void take_forward(vrWorker *k, const vroc_update_t *m)
 {
-    vrWorker *k = user;
-    vroc_update_t m;
-    (void)ch;
-    if (vroc_update_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
-    if (k->owner && m.gp < 0 && fresh(k, m.run, m.seq) && isfinite(m.t)) {
-        vrOwner_Advance(k->owner, m.t);
-        if (apply_states(k, m.states, m.nstates) != 0) send_earliest(k, m.seq, 0, NULL, 0, NULL, NULL, "bad body state");
-        else look_ahead(k, m.seq, &m.grid, m.allow_instant);
-    }
-    vroc_update_t_decode_cleanup(&m);
+    if (!k->owner || m->gp >= 0 || !fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
+    vrOwner_Advance(k->owner, m->t);
+    if (apply_states(k, m->states, m->nstates) != 0) send_earliest(k, m->seq, 0, NULL, 0, NULL, NULL, "bad body state");
+    else look_ahead(k, m->seq, &m->grid, m->allow_instant);
 }
 
 /* frame end: the contacts that could carry the wanted bodies */
@@ -350,27 +339,27 @@ static void report_candidates(vrWorker *k, const vroc_contacts_t *m)
     free(want);
 }
 
-static void on_contacts(const lcm_recv_buf_t *rb, const char *ch, void *user)
+static void take_contacts(vrWorker *k, const vroc_contacts_t *m)
 {
-    vrWorker *k = user;
-    vroc_contacts_t m;
-    (void)ch;
-    if (vroc_contacts_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
-    if (k->owner && fresh(k, m.run, m.seq) && isfinite(m.t)) {
-        vrOwner_Advance(k->owner, m.t);
-        report_candidates(k, &m);
-    }
-    vroc_contacts_t_decode_cleanup(&m);
+    if (!k->owner || !fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
+    vrOwner_Advance(k->owner, m->t);
+    report_candidates(k, m);
 }
 
-static void on_shutdown(const lcm_recv_buf_t *rb, const char *ch, void *user)
+static void take_shutdown(vrWorker *k, const vroc_shutdown_t *m)
 {
-    vrWorker *k = user;
-    vroc_shutdown_t m;
-    (void)ch;
-    if (vroc_shutdown_t_decode(rb->data, 0, (int)rb->data_size, &m) < 0) return;
-    if (k->run != 0 && m.run == k->run) k->done = 1;
+    if (k->run != 0 && m->run == k->run) k->done = 1;
 }
+
+/* a message that does not decode is dropped: the SGP asks again */
+static void ignore(vrWorker *k) { (void)k; }
+
+VR_HANDLER(on_setup, vroc_setup_t, vrWorker, take_setup, ignore)
+VR_HANDLER(on_frame, vroc_frame_start_t, vrWorker, take_frame, ignore)
+VR_HANDLER(on_advance, vroc_advance_t, vrWorker, take_advance, ignore)
+VR_HANDLER(on_forward, vroc_update_t, vrWorker, take_forward, ignore)
+VR_HANDLER(on_contacts, vroc_contacts_t, vrWorker, take_contacts, ignore)
+VR_HANDLER(on_shutdown, vroc_shutdown_t, vrWorker, take_shutdown, ignore)
 
 /* ---- life ----------------------------------------------------------------------------------- */
 
@@ -392,7 +381,6 @@ vrWorker *vrWorker_Create(vrLink *link, long long nonce, int forked)
     k->parent = getppid();
     k->gp = -1;
     k->last_seq = k->reply_seq = -1;
-    k->world = vrWorld_Create();
     vrUpdate_Init(&k->scratch);
     parse_kill(k);
     k->subs[0] = lcm_subscribe(link->lcm, VR_CH_SETUP, on_setup, k);
@@ -401,7 +389,7 @@ vrWorker *vrWorker_Create(vrLink *link, long long nonce, int forked)
     k->subs[3] = lcm_subscribe(link->lcm, VR_CH_FORWARD, on_forward, k);
     k->subs[4] = lcm_subscribe(link->lcm, VR_CH_SHUTDOWN, on_shutdown, k);
     k->subs[5] = lcm_subscribe(link->lcm, VR_CH_CONTACTS, on_contacts, k);
-    if (!k->world || !k->subs[0] || !k->subs[1] || !k->subs[2] || !k->subs[3] || !k->subs[4] || !k->subs[5]) {
+    if (!k->subs[0] || !k->subs[1] || !k->subs[2] || !k->subs[3] || !k->subs[4] || !k->subs[5]) {
         vrWorker_Free(k);
         return NULL;
     }
@@ -415,7 +403,7 @@ void vrWorker_Free(vrWorker *k)
     for (i = 0; i < 6; i++)
         if (k->subs[i]) lcm_unsubscribe(k->link->lcm, k->subs[i]);
     vrOwner_Free(k->owner);
-    vrWorld_Destroy(k->world);
+    vrTable_Free(&k->objects);
     vrUpdate_Free(&k->scratch);
     vrBuf_Free(&k->reply);
     free(k->ids);
@@ -456,4 +444,10 @@ int vrWorker_Main(const char *url, long long nonce, int forked, char *err, size_
     vrWorker_Free(k);
     vrLink_Close(&link);
     return 0;
+}
+
+int vrWorker_Run(const char *url, char *err, size_t n)
+{
+    unsigned long long nonce = (unsigned long long)vrLink_NewId() ^ (unsigned long long)getpid();
+    return vrWorker_Main(url, (long long)(nonce >> 1) | 1, 0, err, n);
 }

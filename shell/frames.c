@@ -1,6 +1,7 @@
-/* display.c — the shell's side of SPEC 4: open the display when something
- * needs it, and once it is open draw every frame and write it into the
- * frames folder, numbered by the frame count since `restart`. */
+/* frames.c — the frames the shell draws (SPEC 4): the display opened when
+ * something needs it (src/display.c is the library's side), and once it is
+ * open every frame drawn and written into the `frames` folder, numbered by
+ * the frame count since `restart`; the `display` and `refresh` commands. */
 #include <stdio.h>
 #include "commands.h"
 

@@ -1,0 +1,140 @@
+/* build.c — an object's shape, mass and initial state from its definition.
+ *
+ *   copy_draw_mesh   the hull's vertices, normals and faces as vrMesh arrays
+ *   make_polyhedron  the hull of the definition (a sphere's: its drawing mesh)
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "build.h"
+#include "config.h"
+
+double vrObjectDef_Mass(const vrObjectDef *d) { return d->mass_set ? d->mass : d->volume; }
+
+int vrObjectDef_ShapeChanged(const vrObjectDef *a, const vrObjectDef *b)
+{
+    switch (b->type) {
+    case VR_SPHERE:
+        return a->radius != b->radius || a->ures != b->ures || a->vres != b->vres;
+    case VR_CUBE:
+        return memcmp(a->size, b->size, sizeof a->size) != 0;
+    case VR_SUPERQUADRIC:
+        return a->exp1 != b->exp1 || a->exp2 != b->exp2 || a->a1 != b->a1 || a->a2 != b->a2 || a->a3 != b->a3
+            || a->ures != b->ures || a->vres != b->vres;
+    default:
+        return strcmp(a->file, b->file) != 0;
+    }
+}
+
+int vrObjectDef_MassChanged(const vrObjectDef *a, const vrObjectDef *b)
+{
+    return vrObjectDef_Mass(a) != vrObjectDef_Mass(b) || a->elasticity != b->elasticity;
+}
+
+static int copy_draw_mesh(vrObject *o)
+{
+    const vrPolyhedron *p = o->poly;
+    int i, nfv = p->face_start[p->nf];
+    o->draw_verts = malloc((size_t)p->nv * 3 * sizeof(double));
+    o->draw_normals = malloc((size_t)p->nv * 3 * sizeof(double));
+    o->draw_face_start = malloc((size_t)(p->nf + 1) * sizeof(int));
+    o->draw_face_verts = malloc((size_t)nfv * sizeof(int));
+    if (!o->draw_verts || !o->draw_normals || !o->draw_face_start || !o->draw_face_verts) return -1;
+    for (i = 0; i < p->nv; i++) {
+        o->draw_verts[3 * i] = p->vert[i].x;
+        o->draw_verts[3 * i + 1] = p->vert[i].y;
+        o->draw_verts[3 * i + 2] = p->vert[i].z;
+        o->draw_normals[3 * i] = p->vert_normal[i].x;
+        o->draw_normals[3 * i + 1] = p->vert_normal[i].y;
+        o->draw_normals[3 * i + 2] = p->vert_normal[i].z;
+    }
+    memcpy(o->draw_face_start, p->face_start, (size_t)(p->nf + 1) * sizeof(int));
+    memcpy(o->draw_face_verts, p->face_vert, (size_t)nfv * sizeof(int));
+    return 0;
+}
+
+static int make_polyhedron(vrObject *o, char *err, size_t n)
+{
+    const vrObjectDef *d = &o->def;
+    switch (d->type) {
+    case VR_SPHERE:
+        return vrPolyhedron_Sphere(d->radius, d->ures, d->vres, &o->poly, err, n);
+    case VR_CUBE:
+        return vrPolyhedron_Cube(vrVec3_Of(d->size), &o->poly, err, n);
+    case VR_SUPERQUADRIC:
+        return vrPolyhedron_Superquadric(d->exp1, d->exp2, vec3_make(d->a1, d->a2, d->a3), d->ures, d->vres,
+                                         &o->poly, err, n);
+    default:
+        if (!o->off && !o->poly) return vrGeom_Fail(err, n, "polyhedron '%s' has no file (file = path.off)", o->name);
+        if (o->off) {
+            o->poly = o->off;
+            o->off = NULL;
+        }
+        return 0;
+    }
+}
+
+int vrObject_Build(vrObject *o, char *err, size_t n)
+{
+    static unsigned long shapes_made;
+    const vrObjectDef *d = &o->def;
+    vrShape *sh = &o->body.shape;
+    mat33 unit;
+    double rin, rout;
+    if (d->type != VR_POLYHEDRON || o->off) vrObject_FreeShape(o);
+    if (!o->poly && make_polyhedron(o, err, n) != 0) return -1;
+    if (!o->draw_verts && copy_draw_mesh(o) != 0) return vrGeom_Fail(err, n, "out of memory");
+    memset(sh, 0, sizeof *sh);
+    if (d->type == VR_SPHERE) {
+        double i = 0.4 * d->radius * d->radius;     /* a solid sphere: 2/5 m r^2 */
+        sh->kind = VR_SHAPE_SPHERE;
+        sh->radius = d->radius;
+        unit = mat33_diag(i, i, i);
+        rin = rout = d->radius;
+    } else {
+        sh->kind = d->type == VR_CUBE ? VR_SHAPE_BOX : VR_SHAPE_POLY;
+        sh->half = vrVec3_Of(d->size);
+        sh->poly = o->poly;
+        unit = o->poly->inertia_unit;
+        rin = o->poly->r_in;
+        rout = o->poly->r_out;
+    }
+    sh->serial = ++shapes_made;
+    vrBody_SetMassProperties(&o->body, vrObjectDef_Mass(d), &unit, rin, rout);
+    o->body.elasticity = d->elasticity;
+    o->built = 1;
+    return 0;
+}
+
+quat vrObjectDef_Orientation(const vrObjectDef *d)
+{
+    if (!d->rotate_set) return quat_identity();
+    return quat_from_axis_angle(vec3_normalize(vrVec3_Of(d->rotate_axis)), d->rotate_angle);
+}
+
+vec3 vrBody_MomentumAt(const vrBody *b, quat q, vec3 omega)
+{
+    vrPose p = vrPose_make(vec3_zero(), q);
+    mat33 I = vrBody_InertiaWorld(b, &p);
+    return mat33_mulv(&I, omega);
+}
+
+void vrObject_Place(vrObject *o, double t, const vrFlight *f)
+{
+    quat q = vrObjectDef_Orientation(&o->def);
+    o->body.resting = 0;
+    o->body.nsupport = 0;
+    o->body.hit = 0;
+    vrBody_Anchor(&o->body, t, vrVec3_Of(o->def.translate), vrVec3_Of(o->def.linear_vel), q,
+                  vrBody_MomentumAt(&o->body, q, vrVec3_Of(o->def.angular_vel)), f);
+    o->have_frame_pose = 0;
+}
+
+int vrObject_Ready(vrObject *o, double t, const vrFlight *f, char *err, size_t n)
+{
+    if (!o->built) {
+        if (vrObject_Build(o, err, n) != 0) return -1;
+        if (o->live) return 0;
+    }
+    if (!o->live) vrObject_Place(o, t, f);
+    return 0;
+}

@@ -1,0 +1,158 @@
+/* owners.c — the owners of the pairs, seen from the coordinator.
+ *
+ * Serial VROC is one owner (owner.h) holding every pair, in this process:
+ * "send" is a function call (ARCHITECTURE "the loop, once").  With gps > 0
+ * the workers own them instead (parallel/sgp.c); both answer through the
+ * same vrOwnerSet, so the frame loop is one loop.
+ *
+ *   retire_owner       the serial owner goes; its counts stay in the stats
+ *   make_serial_owner  one owner of every pair, settled from the poses at t
+ *   deliver            the serial owner hears of the states changed since
+ *   serial_*           the serial owner set's operations
+ */
+#include <stdlib.h>
+#include "grow.h"
+#include "config.h"
+#include "owners.h"
+#include "rest.h"
+#include "parallel/sgp.h"
+
+static void retire_owner(vrWorld *w)
+{
+    vrOwnerStats os;
+    if (!w->owner) return;
+    vrOwner_Stats(w->owner, &os);
+    w->retired.checks += os.checks;
+    w->retired.heap_pops += os.heap_pops;
+    w->retired.response.solves += os.response.solves;
+    w->retired.response.refactors += os.response.refactors;
+    w->retired.response.factors += os.response.factors;
+    vrOwner_Free(w->owner);
+    w->owner = NULL;
+}
+
+/* pairs settle from the poses at t unless a body of theirs changed since
+ * the owners last heard */
+static int make_serial_owner(vrWorld *w)
+{
+    vrParams p = vrSettings_Params(&w->s);
+    unsigned char *pending;
+    int i, j, rc = 0;
+    w->owner = vrOwner_Create();
+    if (!w->owner) return -1;
+    vrOwner_SetParams(w->owner, &p);
+    for (i = 0; i < w->table.n; i++)
+        if (w->table.obj[i] && w->table.obj[i]->live && vrOwner_HoldBody(w->owner, i, &w->table.obj[i]->body) != 0)
+            return -1;
+    if (!(pending = vrTable_PendingMarks(&w->table, &w->pending))) return -1;
+    for (i = 0; i < w->table.n && rc == 0; i++)
+        for (j = i + 1; j < w->table.n && rc == 0; j++) {
+            if (!vrTable_LivePair(&w->table, i, j)) continue;
+            rc = vrOwner_AddPairAt(w->owner, i, j, w->t, pending[i] || pending[j]);
+        }
+    free(pending);
+    return rc;
+}
+
+/* every dynamic–dynamic and dynamic–static pair of a new object (SPEC 3.3:
+ * static–static pairs are never made), to be evaluated at the next span */
+int vrOwners_AddObject(vrWorld *w, int id)
+{
+    int j;
+    if (!w->owner) return 0;
+    if (vrOwner_HoldBody(w->owner, id, &w->table.obj[id]->body) != 0) return -1;
+    for (j = 0; j < w->table.n; j++) {
+        if (j == id || !vrTable_LivePair(&w->table, id, j)) continue;
+        if (vrOwner_AddPair(w->owner, j < id ? j : id, j < id ? id : j) != 0) return -1;
+    }
+    return 0;
+}
+
+int vrOwners_Choose(vrWorld *w, char *err, size_t n)
+{
+    if (w->s.gps > 0) {
+        if (w->owner) {
+            retire_owner(w);
+            w->structure++;
+        }
+        return vrSgp_Sync(w, err, n);
+    }
+    if (w->sgp) vrSgp_Retire(w);
+    if (!w->owner && make_serial_owner(w) != 0) return vrGeom_Fail(err, n, "out of memory");
+    return 0;
+}
+
+int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up)
+{
+    vrFlight f = vrSettings_Flight(&w->s);
+    int i;
+    if (up->n == 0) return 0;
+    if (vrRest_WakeDependents(w, up, up->body[0].t) != 0) return -1;
+    for (i = 0; i < up->n; i++) {
+        vrBodyState *st;
+        vrObject *o = w->table.obj[up->body[i].id];
+        vrBody_Apply(&o->body, &up->body[i], &f);
+        st = vrUpdate_Body(&w->pending, &o->body, up->body[i].t);
+        if (!st) return -1;
+        *st = up->body[i];
+    }
+    return 0;
+}
+
+/* ---- the serial owner set ------------------------------------------------------------ */
+
+static int note_changed(vrWorld *w, int id)
+{
+    if (vrGrow((void **)&w->changed, &w->changedcap, w->nchanged + 1, sizeof *w->changed) != 0) return -1;
+    w->changed[w->nchanged++] = id;
+    return 0;
+}
+
+static int deliver(vrWorld *w)
+{
+    int i;
+    w->nchanged = 0;
+    for (i = 0; i < w->pending.n; i++)
+        if (note_changed(w, w->pending.body[i].id) != 0) return -1;
+    vrOwner_BodiesChanged(w->owner, w->changed, w->nchanged);
+    w->pending.n = 0;
+    return 0;
+}
+
+static int serial_first_event(vrWorld *w, const vrGrid *g, int allow, vrEvent *ev, char *err, size_t n)
+{
+    int r;
+    if (deliver(w) != 0) return vrGeom_Fail(err, n, "out of memory");
+    r = vrOwner_FirstEvent(w->owner, g, allow, ev);
+    return r < 0 ? vrGeom_Fail(err, n, "out of memory") : r;
+}
+
+static int serial_respond(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, size_t n)
+{
+    vrOwner_Advance(w->owner, ev->t);
+    if (vrOwner_Respond(w->owner, ev, up) != 0) return vrGeom_Fail(err, n, "collision response: the linear solve failed");
+    return 0;
+}
+
+static void serial_end_frame(vrWorld *w, double T) { vrOwner_Advance(w->owner, T); }
+
+static int serial_overlapping(vrWorld *w, double tol, const int *ids, int nids, int (*out)[2], int max, char *err,
+                              size_t n)
+{
+    int k;
+    if (deliver(w) != 0) return vrGeom_Fail(err, n, "out of memory");
+    k = vrOwner_Overlapping(w->owner, w->t, tol, ids, nids, out, max);
+    return k < 0 ? vrGeom_Fail(err, n, "out of memory") : k;
+}
+
+static int serial_candidates(vrWorld *w, double T, const unsigned char *want, vrCandidates *out, char *err, size_t n)
+{
+    if (deliver(w) != 0 || vrOwner_SupportCandidates(w->owner, T, want, w->table.n, out) != 0)
+        return vrGeom_Fail(err, n, "out of memory");
+    return 0;
+}
+
+static const vrOwnerSet serial_owners = {serial_first_event, serial_respond, serial_end_frame, serial_overlapping,
+                                         serial_candidates};
+
+const vrOwnerSet *vrOwners_Of(const vrWorld *w) { return w->s.gps > 0 ? &vrSgp_Owners : &serial_owners; }

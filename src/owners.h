@@ -1,0 +1,19 @@
+/* owners.h — who owns the pairs: serial VROC's one owner of every pair
+ * (ARCHITECTURE), or the workers (parallel/sgp.h), as the settings say;
+ * and how the owners hear of changed states. */
+#ifndef VROC_OWNERS_H
+#define VROC_OWNERS_H
+
+#include "world_state.h"
+#include "ownerset.h"
+
+/* serial or parallel, as the settings say: the owners made or re-set */
+int vrOwners_Choose(vrWorld *w, char *err, size_t n);
+/* the owner set the settings choose */
+const vrOwnerSet *vrOwners_Of(const vrWorld *w);
+/* a new object's body and its pairs join the serial owner, if there is one */
+int vrOwners_AddObject(vrWorld *w, int id);
+/* applies an update: wakes what rests on changed bodies, re-anchors, tells the owners */
+int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up);
+
+#endif

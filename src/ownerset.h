@@ -1,0 +1,28 @@
+/* ownerset.h — what the coordinator asks of the pair owners (ARCHITECTURE
+ * "the loop, once"): the serial owner of every pair (owners.c), or the
+ * workers through LCM (parallel/sgp.c).  The frame loop and rest.c call
+ * through it; the two owner sets implement it. */
+#ifndef VROC_OWNERSET_H
+#define VROC_OWNERSET_H
+
+#include "vroc.h"
+#include "owner.h"
+
+/* an owner-set operation's answer: a worker died, the frame starts over */
+#define VR_RESTART_FRAME 2
+
+/* first_event first delivers the states in w->pending. */
+typedef struct vrOwnerSet {
+    int (*first_event)(vrWorld *w, const vrGrid *g, int allow_instant, vrEvent *ev, char *err, size_t n);
+    /* every clock moves to ev->t; the responder's new states */
+    int (*respond)(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, size_t n);
+    void (*end_frame)(vrWorld *w, double T);
+    /* the pairs of the bodies ids[0..nids) overlapping deeper than tol */
+    int (*overlapping)(vrWorld *w, double tol, const int *ids, int nids, int (*out)[2], int max, char *err,
+                       size_t n);
+    /* frame end T: contacts that could carry the bodies with want[id] */
+    int (*support_candidates)(vrWorld *w, double T, const unsigned char *want, vrCandidates *out,
+                              char *err, size_t n);
+} vrOwnerSet;
+
+#endif

@@ -1,0 +1,209 @@
+/* exchange.c — a request and its answers over UDP multicast, which loses
+ * and repeats messages (SPEC 5): every request carries the run id and a
+ * sequence number and is resent with back-off until every worker asked
+ * has answered; an answer is taken once, from the worker it names, for the
+ * request it names.  A worker silent for DEADLINE_MS, or a forked one that
+ * exited, is declared dead.
+ *
+ *   sender                 the worker an answer is from, if it is awaited
+ *   take_*                 an answer of each kind (the VR_HANDLER callbacks)
+ *   resend / send_request  the request to every worker, or a setup each
+ *   exited                 a forked worker that is gone
+ */
+#include <string.h>
+#include <sys/wait.h>
+#include "exchange.h"
+#include "wire.h"
+#include "vroc_candidates_t.h"
+#include "vroc_earliest_t.h"
+#include "vroc_hello_t.h"
+#include "vroc_update_t.h"
+
+#define RESEND_MS 5.0
+#define RESEND_MAX_MS 200.0
+#define DEADLINE_MS 1000.0      /* SPEC 5: a worker silent this long is dead */
+
+/* ---- answers -------------------------------------------------------------------------- */
+
+static vrGpInfo *sender(vrSgp *s, long long run, long long seq, int gp, int waiting)
+{
+    if (run != s->run) {
+        s->foreign++;
+        return NULL;
+    }
+    if (seq != s->seq || waiting != s->waiting || gp < 0 || gp >= s->n || !s->gp[gp].alive || s->gp[gp].replied)
+        return NULL;
+    s->received++;
+    s->gp[gp].last_heard = vrLink_NowMs();
+    return &s->gp[gp];
+}
+
+static void note_overlaps(vrSgp *s, const vroc_earliest_t *m)
+{
+    int i;
+    for (i = 0; i < m->noverlap && s->noverlap < MAX_OVERLAPS; i++) {
+        s->overlap[s->noverlap][0] = m->a[i];
+        s->overlap[s->noverlap][1] = m->b[i];
+        s->noverlap++;
+    }
+}
+
+static void note_error(vrSgp *s, int gp, const char *error)
+{
+    if (error[0] && !s->error[0]) snprintf(s->error, sizeof s->error, "worker %d: %s", gp, error);
+}
+
+static void count_malformed(vrSgp *s) { s->malformed++; }
+
+static void take_earliest(vrSgp *s, const vroc_earliest_t *m)
+{
+    vrGpInfo *g = sender(s, m->run, m->seq, m->gp, WAIT_EARLIEST);
+    if (g && m->found && (!isfinite(m->t) || m->kind <= VR_EV_NONE || m->kind > VR_EV_SUPPORT_BEGIN)) {
+        s->malformed++;
+        g = NULL;
+    }
+    if (!g) return;
+    g->replied = 1;
+    g->found = m->found;
+    g->t = m->t;
+    g->order = m->order;
+    g->kind = m->kind;
+    g->now.checks = m->checks;
+    g->now.heap_pops = m->heap_pops;
+    g->copies = m->copies;
+    note_overlaps(s, m);
+    note_error(s, m->gp, m->error);
+}
+
+static void take_update(vrSgp *s, const vroc_update_t *m)
+{
+    vrGpInfo *g = m->gp == s->responder ? sender(s, m->run, m->seq, m->gp, WAIT_UPDATE) : NULL;
+    if (!g) return;
+    s->reply.n = 0;
+    if (vrWire_GetStates(m->states, m->nstates, s->max_id, &s->reply) != 0) {
+        s->malformed++;
+        return;
+    }
+    g->replied = 1;
+    g->now.solves = m->solves;
+    g->now.refactors = m->refactors;
+    g->now.factors = m->factors;
+}
+
+static void take_candidates(vrSgp *s, const vroc_candidates_t *m)
+{
+    vrGpInfo *g = sender(s, m->run, m->seq, m->gp, WAIT_CANDIDATES);
+    if (!g) return;
+    if (vrWire_GetCandidates(m, s->max_id, &s->candidates) != 0) s->malformed++;
+    else g->replied = 1;
+    note_error(s, m->gp, m->error);
+}
+
+/* heartbeats of busy workers; announcements of free ones */
+static void take_hello(vrSgp *s, const vroc_hello_t *m)
+{
+    int i;
+    if (m->run == s->run && m->gp >= 0 && m->gp < s->n) s->gp[m->gp].last_heard = vrLink_NowMs();
+    if (m->run != 0) return;
+    for (i = 0; i < s->n; i++)
+        if (s->gp[i].nonce == m->nonce) {
+            s->gp[i].alive = 1;          /* a worker of ours is up */
+            return;
+        }
+    for (i = 0; i < s->n; i++)          /* a free worker started by hand */
+        if (s->gp[i].nonce == 0 && !s->gp[i].pid) {
+            s->gp[i].nonce = m->nonce;
+            s->gp[i].alive = 1;
+            return;
+        }
+}
+
+VR_HANDLER(on_earliest, vroc_earliest_t, vrSgp, take_earliest, count_malformed)
+VR_HANDLER(on_update, vroc_update_t, vrSgp, take_update, count_malformed)
+VR_HANDLER(on_candidates, vroc_candidates_t, vrSgp, take_candidates, count_malformed)
+VR_HANDLER(on_hello, vroc_hello_t, vrSgp, take_hello, count_malformed)
+
+void vrSgp_Subscribe(vrSgp *s)
+{
+    s->subs[0] = lcm_subscribe(s->link.lcm, VR_CH_EARLIEST, on_earliest, s);
+    s->subs[1] = lcm_subscribe(s->link.lcm, VR_CH_UPDATE, on_update, s);
+    s->subs[2] = lcm_subscribe(s->link.lcm, VR_CH_HELLO, on_hello, s);
+    s->subs[3] = lcm_subscribe(s->link.lcm, VR_CH_CANDIDATES, on_candidates, s);
+}
+
+void vrSgp_Unsubscribe(vrSgp *s)
+{
+    int i;
+    for (i = 0; i < 4; i++)
+        if (s->subs[i]) lcm_unsubscribe(s->link.lcm, s->subs[i]);
+}
+
+/* ---- the round ------------------------------------------------------------------------ */
+
+int vrSgp_AliveCount(const vrSgp *s)
+{
+    int i, k = 0;
+    for (i = 0; i < s->n; i++) k += s->gp[i].alive;
+    return k;
+}
+
+static void resend(vrSgp *s)
+{
+    int i;
+    if (!s->setup_round) {
+        vrLink_Publish(&s->link, s->req_channel, s->req.data, s->req.len);
+        return;
+    }
+    for (i = 0; i < s->n; i++)
+        if (s->gp[i].alive && !s->gp[i].replied)
+            vrLink_Publish(&s->link, VR_CH_SETUP, s->gp[i].setup.data, s->gp[i].setup.len);
+}
+
+/* sends the request once; messages counts requests and first answers, not
+ * resends or duplicates, so that it depends on the run, not on timing */
+static void send_request(vrSgp *s)
+{
+    s->requests += s->setup_round ? vrSgp_AliveCount(s) : 1;
+    if (s->setup_round) resend(s);
+    else vrLink_Publish(&s->link, s->req_channel, s->req.data, s->req.len);
+}
+
+static int exited(vrGpInfo *g)
+{
+    int status;
+    return g->pid > 0 && waitpid(g->pid, &status, WNOHANG) == g->pid;
+}
+
+int vrSgp_Exchange(vrSgp *s, int waiting, int target)
+{
+    double start = vrLink_NowMs(), last, interval = RESEND_MS;
+    int i, died = 0;
+    s->waiting = waiting;
+    for (i = 0; i < s->n; i++) {
+        s->gp[i].replied = !s->gp[i].alive || (target >= 0 && i != target);
+        s->gp[i].last_heard = start;
+    }
+    send_request(s);
+    last = start;
+    for (;;) {
+        double now;
+        int all = 1;
+        for (i = 0; i < s->n; i++) all &= s->gp[i].replied;
+        if (all) return died;
+        vrLink_Handle(&s->link, 2);
+        now = vrLink_NowMs();
+        if (now - last >= interval) {
+            resend(s);
+            last = now;
+            interval = fmin(2 * interval, RESEND_MAX_MS);
+        }
+        for (i = 0; i < s->n; i++) {
+            vrGpInfo *g = &s->gp[i];
+            if (g->replied || (now - g->last_heard < DEADLINE_MS && !exited(g))) continue;
+            g->alive = 0;
+            g->replied = 1;
+            died = 1;
+        }
+        if (died) return 1;
+    }
+}

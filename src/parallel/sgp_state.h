@@ -1,0 +1,62 @@
+/* sgp_state.h — the SGP's state (thesis 3.5.2, SPEC 5): its workers, the
+ * request in flight and the answers, and the frame start kept to redo the
+ * frame.  Shared by the SGP's files: exchange.c (a request and its
+ * answers), spawn.c (the workers' start and end), setup.c (their objects
+ * and pairs) and sgp.c (the owner set). */
+#ifndef VROC_SGP_STATE_H
+#define VROC_SGP_STATE_H
+
+#include <sys/types.h>
+#include "config.h"
+#include "world_state.h"
+#include "link.h"
+#include "worker.h"
+
+#define MAX_OVERLAPS 64
+
+/* what the SGP waits for: the answer names it, so a late one is not taken
+ * for the answer to another request */
+enum { WAIT_EARLIEST, WAIT_UPDATE, WAIT_CANDIDATES };
+
+/* a worker's owner's counters (stats keys) */
+typedef struct vrGpCounts { long long checks, heap_pops, solves, refactors, factors; } vrGpCounts;
+
+typedef struct vrGpInfo {
+    long long nonce;
+    pid_t pid;                  /* forked workers; 0 otherwise */
+    int alive, replied;
+    double last_heard;
+    int found;                  /* its last earliest */
+    double t;
+    long long order;
+    int kind;
+    vrGpCounts now;             /* of its owner, as it last said */
+    vrGpCounts before;          /* of the owners it had before: a setup makes a new one */
+    int copies, pairs;
+    vrBuf setup;                /* its setup during a setup round */
+} vrGpInfo;
+
+struct vrSgp {
+    vrLink link;
+    char url[256];
+    int n;
+    vrGpInfo gp[VR_MAX_GPS];
+    vrWorker *local[VR_MAX_GPS];   /* memq://: workers in this process */
+    long long run, seq;
+    long structure;             /* the world's, at the last setup */
+    int waiting, responder, setup_round, max_id;
+    vrBuf req;                  /* the broadcast request awaiting answers */
+    const char *req_channel;
+    vrUpdate reply;             /* the responder's states */
+    vrCandidates candidates;    /* frame end: what the workers found */
+    int overlap[MAX_OVERLAPS][2], noverlap;
+    char error[256];
+    int frame_open;
+    vrUpdate snap, snap_pending;   /* the frame start, to redo the frame */
+    long long snap_collisions;
+    vrGpCounts snap_counts[VR_MAX_GPS];  /* each worker's counts then (before + now) */
+    long long requests, received, foreign, malformed;
+    lcm_subscription_t *subs[4];
+};
+
+#endif

@@ -1,0 +1,120 @@
+/* start.c — vrWorld_Start: the world made ready for a frame.
+ *
+ *   apply_params     changed settings reach the owners; bodies re-anchored
+ *   report_overlaps  SPEC 1.4: added or moved objects must not interpenetrate
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "grow.h"
+#include "build.h"
+#include "config.h"
+#include "owners.h"
+#include "start.h"
+
+#define MAX_REPORTED_OVERLAPS 8
+
+int vrWorld_ListDynamic(vrWorld *w)
+{
+    int i;
+    w->ndyn = 0;
+    w->ndyn_slot = 0;
+    if (vrGrow((void **)&w->dyn_slot, &w->dyn_slotcap, w->table.n, sizeof *w->dyn_slot) != 0) return -1;
+    w->ndyn_slot = w->table.n;
+    for (i = 0; i < w->table.n; i++) {
+        vrObject *o = w->table.obj[i];
+        w->dyn_slot[i] = -1;
+        if (!o || !o->live || o->body.is_static) continue;
+        if (vrGrow((void **)&w->dyn, &w->dyncap, w->ndyn + 1, sizeof *w->dyn) != 0) return -1;
+        w->dyn_slot[i] = w->ndyn;
+        w->dyn[w->ndyn++] = &o->body;
+    }
+    return 0;
+}
+
+int vrWorld_MakeLive(vrWorld *w, char *err, size_t n)
+{
+    int i;
+    for (i = 0; i < w->table.n; i++) {
+        vrObject *o = w->table.obj[i];
+        if (!o || o->live) continue;
+        o->live = 1;
+        if (!vrUpdate_Body(&w->pending, &o->body, w->t)) return vrGeom_Fail(err, n, "out of memory");
+        if (vrOwners_AddObject(w, i) != 0) return vrGeom_Fail(err, n, "out of memory");
+        w->structure++;
+        o->overlap_owed = 1;
+    }
+    return vrWorld_ListDynamic(w) == 0 ? 0 : vrGeom_Fail(err, n, "out of memory");
+}
+
+/* re-anchor every dynamic body after a change of settings */
+static int apply_params(vrWorld *w)
+{
+    vrParams p = vrSettings_Params(&w->s);
+    int i;
+    int motion = w->params_dirty & VR_PARAMS_MOTION;
+    if (w->owner) vrOwner_SetParams(w->owner, &p);   /* flags every pair */
+    w->update.n = 0;
+    for (i = 0; motion && i < w->ndyn; i++)
+        if (!vrUpdate_Body(&w->update, w->dyn[i], w->t)) return -1;
+    w->params_dirty = 0;
+    w->structure++;                                  /* workers are made anew with them */
+    return vrWorld_ApplyUpdate(w, &w->update);
+}
+
+/* SPEC 1.4: the pairs of the bodies added or moved since the last start
+ * that checked (every body at the first start; none owed: nothing to ask);
+ * the other pairs were looked after by the run.  Serial and workers check
+ * exactly these, so they agree whatever pairs their owners have flagged. */
+static int report_overlaps(vrWorld *w, char *err, size_t n)
+{
+    int pairs[MAX_REPORTED_OVERLAPS][2], k, i, nids = 0;
+    int *ids;
+    size_t len;
+    for (i = 0; i < w->table.n; i++)
+        if (w->table.obj[i] && w->table.obj[i]->overlap_owed) break;
+    if (i == w->table.n) return 0;
+    ids = malloc((size_t)w->table.n * sizeof *ids);
+    if (!ids) return vrGeom_Fail(err, n, "out of memory");
+    for (i = 0; i < w->table.n; i++)
+        if (w->table.obj[i] && w->table.obj[i]->live && w->table.obj[i]->overlap_owed) ids[nids++] = i;
+    k = nids ? vrOwners_Of(w)->overlapping(w, VR_START_OVERLAP, ids, nids, pairs, MAX_REPORTED_OVERLAPS, err, n) : 0;
+    free(ids);
+    if (k < 0) return -1;
+    if (k == 0) {
+        for (i = 0; i < w->table.n; i++)
+            if (w->table.obj[i]) w->table.obj[i]->overlap_owed = 0;
+        return 0;
+    }
+    if (!err || !n) return -1;
+    snprintf(err, n, "objects interpenetrate, not starting:");
+    for (i = 0; i < k && i < MAX_REPORTED_OVERLAPS; i++) {
+        len = strlen(err);
+        snprintf(err + len, n - len, "%s %s and %s", i ? ";" : "", w->table.obj[pairs[i][0]]->name,
+                 w->table.obj[pairs[i][1]]->name);
+    }
+    if (k > MAX_REPORTED_OVERLAPS) {
+        len = strlen(err);
+        snprintf(err + len, n - len, "; and %d more pairs", k - MAX_REPORTED_OVERLAPS);
+    }
+    return -1;
+}
+
+/* builds what changed and places the objects not yet in the simulation */
+static int ready_all(vrWorld *w, char *err, size_t n)
+{
+    vrFlight f = vrSettings_Flight(&w->s);
+    int i;
+    for (i = 0; i < w->table.n; i++)
+        if (w->table.obj[i] && vrObject_Ready(w->table.obj[i], w->t, &f, err, n) != 0) return -1;
+    return 0;
+}
+
+int vrWorld_Start(vrWorld *w, char *err, size_t n)
+{
+    if (ready_all(w, err, n) != 0 || vrWorld_MakeLive(w, err, n) != 0) return -1;
+    if (w->params_dirty && apply_params(w) != 0) return vrGeom_Fail(err, n, "out of memory");
+    if (vrOwners_Choose(w, err, n) != 0) return -1;
+    if (report_overlaps(w, err, n) != 0) return -1;
+    w->started = 1;
+    return 0;
+}

@@ -1,0 +1,226 @@
+/* table.c — the object table: objects by id and by name, their
+ * definitions, and the OFF text a polyhedron's definition brings.
+ *
+ *   valid_name         [A-Za-z_][A-Za-z0-9_.-]*, at most VR_NAME_MAX bytes
+ *   room_for_one_more  grows the table so that id t->n is free
+ *   off_from_text      a polyhedron from OFF text (a worker gets the text)
+ *   read_text          a whole file's text
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "table.h"
+#include "config.h"
+
+vrObject *vrTable_Get(const vrTable *t, int id)
+{
+    return id >= 0 && id < t->n ? t->obj[id] : NULL;
+}
+
+static int valid_name(const char *s)
+{
+    size_t i, n = strlen(s);
+    if (n == 0 || n > VR_NAME_MAX) return 0;
+    for (i = 0; i < n; i++) {
+        char c = s[i];
+        int alpha = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_';
+        int digit = c >= '0' && c <= '9';
+        if (!(alpha || (i > 0 && (digit || c == '.' || c == '-')))) return 0;
+    }
+    return 1;
+}
+
+int vrTable_Find(const vrTable *t, const char *name)
+{
+    int i;
+    for (i = 0; i < t->n; i++)
+        if (t->obj[i] && strcmp(t->obj[i]->name, name) == 0) return i;
+    return VR_NO_OBJECT;
+}
+
+static int room_for_one_more(vrTable *t, char *err, size_t n)
+{
+    int cap;
+    vrObject **no;
+    if (t->n < t->cap) return 0;
+    cap = t->cap ? 2 * t->cap : 64;
+    no = realloc(t->obj, (size_t)cap * sizeof *no);
+    if (!no) return vrGeom_Fail(err, n, "out of memory");
+    t->obj = no;
+    t->cap = cap;
+    return 0;
+}
+
+int vrTable_Add(vrTable *t, const char *name, vrObjectType type, int *id, char *err, size_t n)
+{
+    vrObject *o;
+    if (!valid_name(name))
+        return vrGeom_Fail(err, n, "bad object name '%.80s' (letters, digits, _ . -, at most %d bytes)", name, VR_NAME_MAX);
+    if (vrTable_Find(t, name) != VR_NO_OBJECT) return vrGeom_Fail(err, n, "object '%s' exists", name);
+    if (room_for_one_more(t, err, n) != 0) return -1;
+    o = calloc(1, sizeof *o);
+    if (!o) return vrGeom_Fail(err, n, "out of memory");
+    strcpy(o->name, name);
+    o->def = vrObjectDef_Default(type);
+    o->alive = 1;
+    o->body.id = t->n;
+    t->obj[t->n] = o;
+    if (id) *id = t->n;
+    t->n++;
+    return 0;
+}
+
+static int off_from_text(const char *text, vrPolyhedron **p, char *err, size_t n)
+{
+    char path[] = "/tmp/vroc-off-XXXXXX";
+    int fd = mkstemp(path), r;
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (!f) return vrGeom_Fail(err, n, "cannot write a temporary OFF file");
+    r = fputs(text, f) < 0;
+    r |= fclose(f) != 0;
+    r = r ? vrGeom_Fail(err, n, "cannot write a temporary OFF file") : vrPolyhedron_FromOFF(path, p, err, n);
+    unlink(path);
+    return r;
+}
+
+int vrTable_Put(vrTable *t, int id, const vrObjectDef *def, const char *off_text, char *err, size_t n)
+{
+    vrObject *o;
+    if (id < 0 || vrObjectDef_Check(def, err, n) != 0) return -1;
+    while (t->n <= id) {
+        if (room_for_one_more(t, err, n) != 0) return -1;
+        t->obj[t->n++] = NULL;
+    }
+    vrObject_Free(t->obj[id]);
+    t->obj[id] = o = calloc(1, sizeof *o);
+    if (!o) return vrGeom_Fail(err, n, "out of memory");
+    snprintf(o->name, sizeof o->name, "#%d", id);
+    o->def = *def;
+    o->alive = 1;
+    o->body.id = id;
+    if (def->type == VR_POLYHEDRON && (!off_text || off_from_text(off_text, &o->off, err, n) != 0))
+        return off_text ? -1 : vrGeom_Fail(err, n, "polyhedron without its OFF text");
+    return 0;
+}
+
+int vrTable_Count(const vrTable *t)
+{
+    int i, n = 0;
+    for (i = 0; i < t->n; i++) n += t->obj[i] != NULL;
+    return n;
+}
+
+int vrTable_List(const vrTable *t, int *ids, int max)
+{
+    int i, n = 0;
+    for (i = 0; i < t->n; i++)
+        if (t->obj[i]) {
+            if (n < max) ids[n] = i;
+            n++;
+        }
+    return n;
+}
+
+void vrTable_Clear(vrTable *t)
+{
+    int i;
+    for (i = 0; i < t->n; i++) vrObject_Free(t->obj[i]);
+    t->n = 0;
+}
+
+void vrTable_Free(vrTable *t)
+{
+    vrTable_Clear(t);
+    free(t->obj);
+    t->obj = NULL;
+    t->cap = 0;
+}
+
+int vrTable_LivePair(const vrTable *t, int i, int j)
+{
+    const vrObject *a = t->obj[i], *b = t->obj[j];
+    return a && b && a->live && b->live && !(a->body.is_static && b->body.is_static);
+}
+
+unsigned char *vrTable_PendingMarks(const vrTable *t, const vrUpdate *pending)
+{
+    unsigned char *mark = calloc((size_t)t->n + 1, 1);
+    int i;
+    /* An owed overlap check (an edit since the last start, or a start
+     * refused) looks at the flagged pairs of the bodies it is owed for:
+     * owners made anew now, e.g. for a new pair set after an edit that only
+     * changed a mass, must flag those, or an overlap the old owners had
+     * flagged goes unseen. */
+    for (i = 0; mark && i < t->n; i++)
+        if (t->obj[i] && t->obj[i]->overlap_owed) mark[i] = 1;
+    for (i = 0; mark && i < pending->n; i++)
+        if (pending->body[i].id >= 0 && pending->body[i].id < t->n) mark[pending->body[i].id] = 1;
+    return mark;
+}
+
+static char *read_text(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf = NULL;
+    size_t len = 0, cap = 0, got;
+    if (!f) return NULL;
+    do {
+        if (len + 4096 + 1 > cap) {
+            char *nb = realloc(buf, cap = 2 * cap + 4096 + 1);
+            if (!nb) break;
+            buf = nb;
+        }
+        got = fread(buf + len, 1, cap - len - 1, f);
+        len += got;
+    } while (got > 0);
+    fclose(f);
+    if (buf) buf[len] = 0;
+    return buf;
+}
+
+int vrObject_SetDef(vrObject *o, const vrObjectDef *def, vrObjectDef *old, char *err, size_t n)
+{
+    if (def->type != o->def.type) return vrGeom_Fail(err, n, "an object's type cannot change");
+    if (vrObjectDef_Check(def, err, n) != 0) return -1;
+    if (def->type == VR_POLYHEDRON && strcmp(def->file, o->def.file) != 0) {
+        vrPolyhedron *p = NULL;
+        char *text = read_text(def->file);
+        if (vrPolyhedron_FromOFF(def->file, &p, err, n) != 0) {
+            free(text);
+            return -1;
+        }
+        if (!text) {
+            vrPolyhedron_Free(p);
+            return vrGeom_Fail(err, n, "out of memory");
+        }
+        vrPolyhedron_Free(o->off);
+        free(o->off_text);
+        o->off = p;
+        o->off_text = text;
+    }
+    *old = o->def;
+    o->def = *def;
+    return 0;
+}
+
+void vrObject_FreeShape(vrObject *o)
+{
+    vrPolyhedron_Free(o->poly);
+    free(o->draw_verts);
+    free(o->draw_normals);
+    free(o->draw_face_start);
+    free(o->draw_face_verts);
+    o->poly = NULL;
+    o->draw_verts = o->draw_normals = NULL;
+    o->draw_face_start = o->draw_face_verts = NULL;
+}
+
+void vrObject_Free(vrObject *o)
+{
+    if (!o) return;
+    vrObject_FreeShape(o);
+    vrPolyhedron_Free(o->off);
+    free(o->off_text);
+    free(o);
+}

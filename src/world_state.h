@@ -1,0 +1,67 @@
+/* world_state.h — the coordinator's state (ARCHITECTURE "the loop, once"):
+ * the objects, the settings, the clock, the owners of the pairs and what
+ * they have not heard yet.  The shell never sees this: it uses
+ * include/vroc.h.  It is a header of its own, apart from world.c (the
+ * world's life cycle, which frees the workers), because the floors below
+ * that file need this state.
+ *
+ * The coordinator's files, from the floor up (each calls only what is
+ * below it):
+ *   config.c table.c build.c    settings and definitions; the object table;
+ *                               an object built from its definition
+ *   world_state.h ownerset.h    this state; what the coordinator asks of owners
+ *   rest.c, parallel/sgp.c      rest (SPEC 3.5); the workers as an owner set
+ *   owners.c                    the owner choice and the serial owner set
+ *   start.c                     a start: objects go live, owners come to date
+ *   loop.c edit.c query.c       the frame loop; live edits; the getters
+ *   world.c random.c output.c   life cycle; `random`; `dump` and `stats`
+ */
+#ifndef VROC_WORLD_STATE_H
+#define VROC_WORLD_STATE_H
+
+#include "vroc.h"
+#include "owner.h"
+#include "reach.h"
+#include "splitmix.h"
+#include "table.h"
+
+typedef struct vrSgp vrSgp;
+
+struct vrWorld {
+    vrSettings s;
+    vrTable table;           /* the objects, by id */
+    double t;
+    long frames;
+    double t_base;           /* frame times are t_base + k time_step, k frames since */
+    long frames_base;        /* (summing time_step frame by frame would drift) */
+    int started;             /* the pair set exists */
+    int instant;             /* responses at instant_t, the last event's time (SPEC 3.1's cap) */
+    double instant_t;
+    int params_dirty;        /* settings changed (config.h's VR_PARAMS_*): for the next frame */
+    long structure;          /* bumped when objects, shapes, masses or settings change */
+    vrOwner *owner;          /* serial: one owner of every pair (NULL while workers run) */
+    vrSgp *sgp;              /* parallel: the workers (parallel/sgp.h) */
+    vrUpdate pending;        /* states changed since the owners last heard */
+    vrOwnerStats retired;    /* statistics of owners that are gone */
+    int may_rest;            /* resting bodies, or more: 0 means none (rest begins only at
+                                frame ends, where they are counted) */
+    vrBody **dyn;            /* live dynamic bodies, for the grid */
+    int ndyn, dyncap;
+    int *dyn_slot;           /* by object id below ndyn_slot: its index in dyn, or -1 */
+    int ndyn_slot, dyn_slotcap;
+    vrReach reach;           /* the grid's largest reach, from bounds on dyn */
+    vrUpdate update;
+    int *changed;            /* scratch: ids changed by an update */
+    int nchanged, changedcap;
+    /* statistics (SPEC 1.3) */
+    long subframes;
+    long long collisions;
+    double frame_ms, sim_ms, render_ms;
+    /* `random` */
+    int random_next;
+    vrSplitmix rng;
+};
+
+static inline vrObject *vrWorld_Object(const vrWorld *w, vrObjectId id) { return vrTable_Get(&w->table, id); }
+
+#endif
