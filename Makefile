@@ -41,6 +41,8 @@ LCM_GEN    := $(patsubst src/parallel/%.lcm,build/gen/vroc_%.c,$(LCM_TYPES))
 SHELL_SRC  := $(filter-out shell/gp_main.c,$(wildcard shell/*.c))
 TEST_SRC   := $(wildcard tests/test_*.c)
 BENCH_SRC  := $(wildcard tests/bench_*.c)
+# the other .c files in tests/ are helpers linked into every test binary
+TEST_HELP_SRC := $(filter-out $(TEST_SRC) $(BENCH_SRC),$(wildcard tests/*.c))
 
 PRODUCTS = libvroc.a vroc vroc-gp vroc-render.so
 
@@ -71,8 +73,9 @@ $(1)_OBJ := $$(patsubst %.c,build/$(1)/%.o,$$(LIB_SRC)) \
             $$(patsubst build/gen/%.c,build/$(1)/gen/%.o,$$(LCM_GEN))
 $(1)_TESTS := $$(patsubst tests/%.c,build/$(1)/tests/%,$$(TEST_SRC))
 $(1)_BENCH := $$(patsubst tests/%.c,build/$(1)/tests/%,$$(BENCH_SRC))
+$(1)_TEST_HELP := $$(patsubst %.c,build/$(1)/%.o,$$(TEST_HELP_SRC))
 # kept, so that make check's last line is its summary, not make's clean-up
-.SECONDARY: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC) $$(BENCH_SRC))
+.SECONDARY: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC) $$(BENCH_SRC) $$(TEST_HELP_SRC))
 
 build/$(1)/%.o: %.c | $$(LCM_GEN) deps
 	@mkdir -p $$(@D)
@@ -98,11 +101,11 @@ build/$(1)/vroc-render.so: src/render.c src/render.h | deps
 	@mkdir -p $$(@D)
 	$$(CC) $$(WARN) $$(DEFS) $$(INCS) $$($(1)_CFLAGS) -fPIC -shared -o $$@ $$< $$($(1)_LDFLAGS) $$(GL_LIBS) -lm
 
-build/$(1)/tests/%: build/$(1)/tests/%.o build/$(1)/libvroc.a
+build/$(1)/tests/%: build/$(1)/tests/%.o $$($(1)_TEST_HELP) build/$(1)/libvroc.a
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
 
 $(1)-all: build/$(1)/libvroc.a build/$(1)/vroc build/$(1)/vroc-gp build/$(1)/vroc-render.so $$($(1)_TESTS)
--include $$($(1)_OBJ:.o=.d) $$(patsubst %.c,build/$(1)/%.d,$$(SHELL_SRC) $$(TEST_SRC) $$(BENCH_SRC) shell/gp_main.c)
+-include $$($(1)_OBJ:.o=.d) $$(patsubst %.c,build/$(1)/%.d,$$(SHELL_SRC) $$(TEST_SRC) $$(BENCH_SRC) $$(TEST_HELP_SRC) shell/gp_main.c)
 endef
 $(foreach v,rel asan,$(eval $(call VARIANT,$(v))))
 

@@ -179,10 +179,6 @@ double vrClosest_Exhaustive(const vrPolyhedron *a, const vrPose *pa, const vrPol
                             vrWalkCache *cache, vec3 *ca, vec3 *cb, int *penetrating);
 double vrClosest_ExhaustivePoint(const vrPolyhedron *a, const vrPose *pa, vec3 point, vrWalkCache *cache, vec3 *ca);
 
-/* Reference distance by brute force over all feature pairs (tests only):
- * 0 when the polyhedra touch or overlap. */
-double vrClosest_BruteForce(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb);
-
 /* Segment helpers shared by closest.c and contact.c (fixed formulas, so
  * both give the same bits).  Parameters in [0, 1] of the closest points of
  * segments p0p1 and q0q1 (parallel segments: the middle of their overlap),

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include "contact.h"
+#include "brute_distance.h"
 #include "test.h"
 
 /* ---- fixtures --------------------------------------------------------- */

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "contact.h"
+#include "brute_distance.h"
 #include "test.h"
 
 /* ---- fixtures --------------------------------------------------------- */
