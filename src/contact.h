@@ -40,14 +40,6 @@ typedef struct vrShape {
                                    address, which a new hull may reuse */
 } vrShape;
 
-typedef struct vrFeature { int type; int index; } vrFeature; /* VR_VERTEX / VR_EDGE / VR_FACE */
-
-/* a vertex of feature f: where a search on p's graph starts */
-static inline int vrFeature_Vertex(const vrPolyhedron *p, vrFeature f)
-{
-    return f.type == VR_VERTEX ? f.index : f.type == VR_EDGE ? p->edge_v[f.index][0] : p->face_vert[p->face_start[f.index]];
-}
-
 /* Per-pair memory of the walk: where the last query ended.  All zero bytes
  * is a valid "start anywhere" state (vertex 0 / vertex 0); so is any stale or
  * out-of-range content.  Only speed depends on it, never a result.

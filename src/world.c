@@ -12,6 +12,8 @@
 #include <time.h>
 #include <unistd.h>
 #include "grow.h"
+#include "off.h"
+#include "primitives.h"
 #include "world.h"
 
 #define MAX_REPORTED_OVERLAPS 8

@@ -6,6 +6,9 @@
 
 #include "contact.h"
 #include "brute_distance.h"
+#include "hull.h"
+#include "off.h"
+#include "primitives.h"
 #include "test.h"
 
 /* ---- fixtures --------------------------------------------------------- */

@@ -5,6 +5,8 @@
 
 #include "contact.h"
 #include "brute_distance.h"
+#include "hull.h"
+#include "primitives.h"
 #include "test.h"
 
 /* ---- fixtures --------------------------------------------------------- */

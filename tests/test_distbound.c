@@ -4,6 +4,7 @@
 #include <string.h>
 #include "test.h"
 #include "distbound.h"
+#include "primitives.h"
 
 #define TEST_LCG_SEED 0xD15B0D5ULL
 #include "test_lcg.h"

@@ -5,6 +5,7 @@
 #include "test.h"
 #include "schedule.h"
 #include "gp.h"
+#include "primitives.h"
 
 #define TEST_LCG_SEED 777ULL
 #include "test_lcg.h"

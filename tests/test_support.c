@@ -7,6 +7,7 @@
  * shortcut may apply) and from one of its vertices (the search always runs).
  */
 #include "../src/contact.c"
+#include "primitives.h"
 #include "test.h"
 
 #define TEST_LCG_SEED 0x9E3779B97F4A7C15ULL
