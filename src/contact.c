@@ -30,6 +30,7 @@
 #include <string.h>
 
 #include "contact.h"
+#include "segment.h"
 
 #define SUPPORT_TOL 1e-9   /* tau: near-support set tolerance (m) */
 #define REGION_SLACK 1e-9  /* slab slack and 2D containment tolerance (m) */
@@ -305,7 +306,7 @@ static int edge_edge_normal(const Body *a, const Body *b, Canon *c)
     c->ha = vec3_dot(n, a0);
     c->hb = vec3_dot(n, b0);
     c->dist = c->hb - c->ha;
-    vrClosest_SegmentParams(a0, a1, b0, b1, &s, &t);
+    vrSegment_ClosestParams(a0, a1, b0, b1, &s, &t);
     c->qa = vec3_lerp(a0, a1, s);
     c->qb = vec3_lerp(b0, b1, t);
     return 1;
@@ -319,7 +320,7 @@ static void point_features(const Body *a, const Body *b, Canon *c)
     double s, t;
     feature_segment(a, &c->sa, &a0, &a1);
     feature_segment(b, &c->sb, &b0, &b1);
-    vrClosest_SegmentParams(a0, a1, b0, b1, &s, &t);
+    vrSegment_ClosestParams(a0, a1, b0, b1, &s, &t);
     c->qa = vec3_lerp(a0, a1, s);
     c->qb = vec3_lerp(b0, b1, t);
     c->dist = vec3_dist(c->qa, c->qb);
@@ -902,7 +903,7 @@ static int near_poly(const Body *b, vec3 c, vrWalkCache *cache, int *steps, Near
     } else {
         vec3 p0, p1;
         feature_segment(b, &s, &p0, &p1);
-        nr->q = vec3_lerp(p0, p1, vrClosest_PointSegmentParam(p0, p1, c));
+        nr->q = vec3_lerp(p0, p1, vrSegment_PointParam(p0, p1, c));
         nr->dist = vec3_dist(c, nr->q);
         nr->dir = nr->dist > 0 ? vec3_scale(vec3_sub(c, nr->q), 1 / nr->dist) : dir;
     }

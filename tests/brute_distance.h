@@ -6,7 +6,7 @@
 #ifndef VROC_BRUTE_DISTANCE_H
 #define VROC_BRUTE_DISTANCE_H
 
-#include "polyhedron.h"
+#include "feature.h"
 
 /* 0 when the polyhedra touch or overlap */
 double vrClosest_BruteForce(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb);
