@@ -161,7 +161,8 @@ static int vertex_vertex(Walk *w)
     vrFeature nbr;
     vec3 x1 = vert_in_other(w, 1, w->f[1].index);
     if (vrVoronoi_Violation(w->p[0], w->f[0], x1, w->tol, &nbr, &w->slack2)) return move(w, 0, nbr);
-    if (vrVoronoi_Violation(w->p[1], w->f[1], vert_in_other(w, 0, w->f[0].index), w->tol, &nbr, &w->slack2)) return move(w, 1, nbr);
+    if (vrVoronoi_Violation(w->p[1], w->f[1], vert_in_other(w, 0, w->f[0].index), w->tol, &nbr, &w->slack2))
+        return move(w, 1, nbr);
     return done(w, w->p[0]->vert[w->f[0].index], x1);
 }
 

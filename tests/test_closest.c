@@ -8,6 +8,7 @@
 #include "brute_distance.h"
 #include "hull.h"
 #include "off.h"
+#include "penetration.h"
 #include "primitives.h"
 #include "test.h"
 

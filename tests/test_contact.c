@@ -6,6 +6,7 @@
 #include "contact.h"
 #include "brute_distance.h"
 #include "hull.h"
+#include "penetration.h"
 #include "primitives.h"
 #include "test.h"
 
