@@ -270,7 +270,7 @@ static int on_face(const vrPolyhedron *p, int f, int v)
     return 0;
 }
 
-/* A face's spread and drop along its normal (contact.c: when they leave
+/* A face's spread and drop along its normal (canonical.c: when they leave
  * room, a direction near the normal has exactly the face as its support
  * set).  The highest other vertex is a neighbour of the face: on a convex
  * polyhedron every vertex below the top has a higher neighbour. */
