@@ -17,6 +17,7 @@
 #include <ccd/ccd.h>
 
 #include "contact.h"
+#include "primitives.h"
 
 #define NPOSE 4096
 #define TRIALS 9

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "build.h"
+#include "off.h"
+#include "primitives.h"
 #include "config.h"
 
 double vrObjectDef_Mass(const vrObjectDef *d) { return d->mass_set ? d->mass : d->volume; }

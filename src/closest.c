@@ -3,7 +3,8 @@
  * V-Clip (B. Mirtich, "V-Clip: fast and robust polyhedral collision
  * detection", ACM TOG 17(3), 1998), written from the paper.  A feature
  * (vertex, edge, face) owns a Voronoi region bounded by planes, each plane
- * naming the neighbouring feature that lies beyond it (sec. 3).  The walk
+ * naming the neighbouring feature that lies beyond it (sec. 3; voronoi.c
+ * holds the regions, this file the walk over them).  The walk
  * keeps one feature of each polyhedron; at every step it either proves the
  * pair closest (each closest point lies in the other feature's region,
  * Theorem 1) or moves one feature to a neighbour, never increasing the
@@ -18,9 +19,7 @@
  *
  * Everything is evaluated in the body frames: a point is carried into the
  * frame of the polyhedron whose region it is tested against, with the one
- * relative transform computed per query.  Region planes are computed on the
- * fly from the stored geometry (a few flops each).  A coherent query costs
- * about 1,000 instructions, a third of them 3x3 transforms (make bench).
+ * relative transform computed per query.
  *
  * Floating point: a plane counts as violated only by more than `tol` metres,
  * so a point lying on a plane shared by two regions is accepted by both and
@@ -29,10 +28,23 @@
  * is counted in the cache (vrWalkCache.fallbacks).
  *
  * No static state: everything lives in the caller's cache and the stack.
+ *   highest_face, closest_on_feature, steepest_edge   feature geometry
+ *   Walk, to_other, vert_in_other    the pair, in side 0's frame
+ *   vertex_vertex .. edge_edge       one step per pair of feature types
+ *   walk_step, pair_points           the dispatch; a final pair's points
+ *   find_piercing, find_contained,   the exhaustive search past the step cap
+ *   nearest_pair, exhaustive
+ *   walk_init, separated             a query's start; its check of the end
+ *   pair_query                       the walk between two polyhedra
+ *   point_step, point_exhaustive,    the walk against a point
+ *   point_query
  */
 #include <stdlib.h>
 
-#include "contact.h"
+#include "closest.h"
+#include "polyhedron.h"
+#include "segment.h"
+#include "voronoi.h"
 
 /* slack of region tests, relative to the scale of the pair (metres) */
 #define REGION_TOL 1e-12
@@ -54,185 +66,13 @@ static int feature_valid(const vrPolyhedron *p, vrFeature f)
     return (unsigned)f.type < 3 && (unsigned)f.index < (unsigned)n[f.type];
 }
 
-/* ---- geometry shared with contact.c ------------------------------------- */
-
-static double clamp01(double x) { return x < 0 ? 0 : x > 1 ? 1 : x; }
-
-double vrClosest_PointSegmentParam(vec3 p0, vec3 p1, vec3 x)
-{
-    vec3 d = vec3_sub(p1, p0);
-    double l2 = vec3_len2(d);
-    return l2 > 0 ? clamp01(vec3_dot(vec3_sub(x, p0), d) / l2) : 0;
-}
-
-/* Ericson, Real-Time Collision Detection, 5.1.9, except that parallel
- * segments take the middle of their overlap (a fixed rule, so that both the
- * walk and the canonical contact get points inside each other's slab). */
-void vrClosest_SegmentParams(vec3 p0, vec3 p1, vec3 q0, vec3 q1, double *s, double *t)
-{
-    vec3 d1 = vec3_sub(p1, p0), d2 = vec3_sub(q1, q0), r = vec3_sub(p0, q0);
-    double a = vec3_dot(d1, d1), e = vec3_dot(d2, d2), b = vec3_dot(d1, d2);
-    double c = vec3_dot(d1, r), f = vec3_dot(d2, r), den = a * e - b * b;
-    double ss, tt;
-    if (a <= 0 || e <= 0) { /* a point: never a polyhedron edge */
-        *s = a > 0 ? clamp01(-c / a) : 0;
-        *t = e > 0 ? clamp01((f + b * *s) / e) : 0;
-        return;
-    }
-    if (den > 1e-12 * a * e) { /* sin^2 of the angle > 1e-12 */
-        ss = clamp01((b * f - c * e) / den);
-    } else {
-        double s0 = -c / a, s1 = (b - c) / a; /* q0, q1 projected on p's line */
-        double lo = s0 < s1 ? s0 : s1, hi = s0 < s1 ? s1 : s0;
-        if (lo < 0) lo = 0;
-        if (hi > 1) hi = 1;
-        ss = lo <= hi ? 0.5 * (lo + hi) : (hi < 0 ? 0 : 1);
-    }
-    tt = (b * ss + f) / e;
-    if (tt < 0) {
-        tt = 0;
-        ss = clamp01(-c / a);
-    } else if (tt > 1) {
-        tt = 1;
-        ss = clamp01((b - c) / a);
-    }
-    *s = ss;
-    *t = tt;
-}
-
-/* ---- Voronoi regions (Mirtich sec. 3) ------------------------------------ */
-
-/* Each region is bounded by planes, each naming the neighbour feature that
- * lies beyond it.  A test returns the plane x violates most, by its excess
- * in metres (s / |nrm| for a plane nrm.(x - o) <= 0), ignoring excesses up
- * to tol: leaving through the worst plane never increases the distance
- * (Mirtich sec. 5.2).  Planes are evaluated from the stored geometry, in
- * the form that costs fewest flops. */
-typedef struct Worst { double score, slack2; vrFeature nbr; int found; } Worst;
-
-/* plane excess s / sqrt(l2) against the worst so far; slack2 keeps the
- * square of the largest excess let pass as within tol */
-static inline void consider(Worst *w, double s, double l2, double tol, int type, int index)
-{
-    if (s <= 0) return;
-    if (s * s <= tol * tol * l2) {
-        if (s * s > w->slack2 * l2) w->slack2 = s * s / l2;
-        return;
-    }
-    if (w->found && s * s <= w->score * l2) return;
-    w->score = s * s / l2;
-    w->nbr = feat(type, index);
-    w->found = 1;
-}
-
-/* vertex: per incident edge, the plane through v perpendicular to it */
-static void vertex_region(const vrPolyhedron *p, int v, vec3 x, double tol, Worst *w)
-{
-    vec3 r = vec3_sub(x, p->vert[v]);
-    int k;
-    for (k = p->vert_edge_start[v]; k < p->vert_edge_start[v + 1]; k++) {
-        int e = p->vert_edge[k];
-        vec3 d = vec3_sub(p->vert[vrPolyhedron_OtherEnd(p, e, v)], p->vert[v]);
-        consider(w, vec3_dot(r, d), vec3_len2(d), tol, VR_EDGE, e);
-    }
-}
-
-/* edge t->h: the planes through t and h perpendicular to it (beyond: those
- * vertices), then those holding it and the left / right face normal
- * (beyond: those faces).  The vertex planes come first: leaving through one
- * keeps the distance, while a face plane violated near an end might not
- * lower it.  With d in the faces, |n x d| = |d|, and
- * (x - t).(n x d) = n.(d x (x - t)). */
-static void edge_region(const vrPolyhedron *p, int e, vec3 x, double tol, Worst *w)
-{
-    const int *ev = p->edge_v[e], *ef = p->edge_f[e];
-    vec3 t = p->vert[ev[0]], d = vec3_sub(p->vert[ev[1]], t), r = vec3_sub(x, t), c;
-    double u = vec3_dot(r, d), l2 = vec3_len2(d);
-    consider(w, -u, l2, tol, VR_VERTEX, ev[0]);
-    consider(w, u - l2, l2, tol, VR_VERTEX, ev[1]);
-    if (w->found) return;
-    c = vec3_cross(d, r);
-    consider(w, vec3_dot(p->face_normal[ef[0]], c), l2, tol, VR_FACE, ef[0]); /* n_l x d points into the left face */
-    consider(w, -vec3_dot(p->face_normal[ef[1]], c), l2, tol, VR_FACE, ef[1]);
-}
-
-/* face: per boundary edge a->b, the plane holding it and the normal
- * (beyond: that edge); its outward normal is (b - a) x n, so the excess is
- * n.((x - a) x (b - a)).  The face plane itself is the walk's business. */
-static void face_region(const vrPolyhedron *p, int f, vec3 x, double tol, Worst *w)
-{
-    int k, s = p->face_start[f], m = p->face_start[f + 1] - s;
-    vec3 n = p->face_normal[f];
-    for (k = 0; k < m; k++) {
-        vec3 a = p->vert[p->face_vert[s + k]], d = vec3_sub(p->vert[p->face_vert[s + (k + 1 == m ? 0 : k + 1)]], a);
-        consider(w, vec3_dot(n, vec3_cross(vec3_sub(x, a), d)), vec3_len2(d), tol, VR_EDGE, p->face_edge[s + k]);
-    }
-}
-
-/* the neighbour beyond the region plane of f that x violates most; 0 when x
- * lies in f's region (within tol), and then *slack2 (if not NULL) is raised
- * to the square of the largest excess let pass */
-static int worst_violation(const vrPolyhedron *p, vrFeature f, vec3 x, double tol, vrFeature *nbr, double *slack2)
-{
-    Worst w;
-    w.found = 0;
-    w.score = w.slack2 = 0;
-    if (f.type == VR_VERTEX) vertex_region(p, f.index, x, tol, &w);
-    else if (f.type == VR_EDGE) edge_region(p, f.index, x, tol, &w);
-    else face_region(p, f.index, x, tol, &w);
-    if (w.found) *nbr = w.nbr;
-    else if (slack2 && w.slack2 > *slack2) *slack2 = w.slack2;
-    return w.found;
-}
-
-/* the FE plane of face f's boundary edge k as nrm.x <= off (for clipping) */
-typedef struct Plane { vec3 nrm; double off; } Plane;
-
-static Plane face_plane(const vrPolyhedron *p, int f, int k)
-{
-    Plane pl;
-    int s = p->face_start[f], m = p->face_start[f + 1] - s;
-    vec3 a = p->vert[p->face_vert[s + k]], b = p->vert[p->face_vert[s + (k + 1 == m ? 0 : k + 1)]];
-    pl.nrm = vec3_cross(vec3_sub(b, a), p->face_normal[f]);
-    pl.off = vec3_dot(pl.nrm, a);
-    return pl;
-}
-
-/* The part [lo, hi] of segment t..h inside the face's prism (its FE planes);
- * 0 when the segment misses it (Mirtich's clipping, sec. 4). */
-static int clip_to_face(const vrPolyhedron *p, int f, vec3 t, vec3 h, double *lo, double *hi)
-{
-    int k, n = vrPolyhedron_FaceSize(p, f);
-    *lo = 0;
-    *hi = 1;
-    for (k = 0; k < n; k++) {
-        Plane pl = face_plane(p, f, k);
-        double st = vec3_dot(pl.nrm, t) - pl.off, sh = vec3_dot(pl.nrm, h) - pl.off;
-        if (st > 0 && sh > 0) return 0;
-        if (st > 0) {
-            double lam = st / (st - sh);
-            if (lam > *lo) *lo = lam;
-        } else if (sh > 0) {
-            double lam = st / (st - sh);
-            if (lam < *hi) *hi = lam;
-        }
-        if (*lo > *hi) return 0;
-    }
-    return 1;
-}
-
-static double face_height(const vrPolyhedron *p, int f, vec3 x)
-{
-    return vec3_dot(p->face_normal[f], x) - p->face_offset[f];
-}
-
 /* the face plane x is farthest above (the nearest one when x is inside) */
 static int highest_face(const vrPolyhedron *p, vec3 x, double *height)
 {
     int g, best = 0;
     double smax = -HUGE_VAL;
     for (g = 0; g < p->nf; g++) {
-        double s = face_height(p, g, x);
+        double s = vrPolyhedron_FaceHeight(p, g, x);
         if (s > smax) {
             smax = s;
             best = g;
@@ -248,9 +88,9 @@ static vec3 closest_on_feature(const vrPolyhedron *p, vrFeature f, vec3 x)
     if (f.type == VR_VERTEX) return p->vert[f.index];
     if (f.type == VR_EDGE) {
         vec3 t = p->vert[p->edge_v[f.index][0]], h = p->vert[p->edge_v[f.index][1]];
-        return vec3_lerp(t, h, vrClosest_PointSegmentParam(t, h, x));
+        return vec3_lerp(t, h, vrSegment_PointParam(t, h, x));
     }
-    return vec3_madd(x, -face_height(p, f.index, x), p->face_normal[f.index]);
+    return vec3_madd(x, -vrPolyhedron_FaceHeight(p, f.index, x), p->face_normal[f.index]);
 }
 
 /* The edge of vertex v along which dot(dir, .) rises fastest, by more than
@@ -320,8 +160,9 @@ static int vertex_vertex(Walk *w)
 {
     vrFeature nbr;
     vec3 x1 = vert_in_other(w, 1, w->f[1].index);
-    if (worst_violation(w->p[0], w->f[0], x1, w->tol, &nbr, &w->slack2)) return move(w, 0, nbr);
-    if (worst_violation(w->p[1], w->f[1], vert_in_other(w, 0, w->f[0].index), w->tol, &nbr, &w->slack2)) return move(w, 1, nbr);
+    if (vrVoronoi_Violation(w->p[0], w->f[0], x1, w->tol, &nbr, &w->slack2)) return move(w, 0, nbr);
+    if (vrVoronoi_Violation(w->p[1], w->f[1], vert_in_other(w, 0, w->f[0].index), w->tol, &nbr, &w->slack2))
+        return move(w, 1, nbr);
     return done(w, w->p[0]->vert[w->f[0].index], x1);
 }
 
@@ -331,10 +172,10 @@ static int vertex_edge(Walk *w, int i)
     int j = 1 - i;
     vec3 x = vert_in_other(w, i, w->f[i].index), q, qi;
     vrFeature nbr;
-    if (worst_violation(w->p[j], w->f[j], x, w->tol, &nbr, &w->slack2)) return move(w, j, nbr);
+    if (vrVoronoi_Violation(w->p[j], w->f[j], x, w->tol, &nbr, &w->slack2)) return move(w, j, nbr);
     q = closest_on_feature(w->p[j], w->f[j], x);
     qi = to_other(w, j, q);
-    if (worst_violation(w->p[i], w->f[i], qi, w->tol, &nbr, &w->slack2)) return move(w, i, nbr);
+    if (vrVoronoi_Violation(w->p[i], w->f[i], qi, w->tol, &nbr, &w->slack2)) return move(w, i, nbr);
     /* side 0's points are in frame 0 already: the vertex (i = 0) or q (i = 1) */
     return i == 0 ? done(w, w->p[0]->vert[w->f[0].index], qi) : done(w, q, x);
 }
@@ -360,8 +201,8 @@ static int vertex_face(Walk *w, int i)
     vec3 x = vert_in_other(w, i, v), n_i;
     vrFeature nbr;
     double h;
-    if (worst_violation(q, w->f[j], x, w->tol, &nbr, &w->slack2)) return move(w, j, nbr);
-    h = face_height(q, f, x);
+    if (vrVoronoi_Violation(q, w->f[j], x, w->tol, &nbr, &w->slack2)) return move(w, j, nbr);
+    h = vrPolyhedron_FaceHeight(q, f, x);
     n_i = rotate_other(w, j, q->face_normal[f]);
     /* an edge of v leading toward the plane lowers |h| */
     e = steepest_edge(w->p[i], v, h >= 0 ? vec3_neg(n_i) : n_i, w->tol);
@@ -379,7 +220,7 @@ static vrFeature nearest_boundary_edge(const vrPolyhedron *p, int f, vec3 t, vec
     for (k = 0; k < m; k++) {
         vec3 a = p->vert[p->face_vert[s + k]], b = p->vert[p->face_vert[s + (k + 1 == m ? 0 : k + 1)]];
         double u, v, d;
-        vrClosest_SegmentParams(t, h, a, b, &u, &v);
+        vrSegment_ClosestParams(t, h, a, b, &u, &v);
         d = vec3_dist(vec3_lerp(t, h, u), vec3_lerp(a, b, v));
         if (d < bestd) {
             bestd = d;
@@ -401,9 +242,9 @@ static int edge_face(Walk *w, int i)
     const int *ev = w->p[i]->edge_v[e];
     vec3 t = vert_in_other(w, i, ev[0]), h = vert_in_other(w, i, ev[1]);
     double lo, hi, dl, du, slope;
-    if (!clip_to_face(q, f, t, h, &lo, &hi)) return move(w, j, nearest_boundary_edge(q, f, t, h));
-    dl = face_height(q, f, vec3_lerp(t, h, lo));
-    du = face_height(q, f, vec3_lerp(t, h, hi));
+    if (!vrVoronoi_ClipToFace(q, f, t, h, &lo, &hi)) return move(w, j, nearest_boundary_edge(q, f, t, h));
+    dl = vrPolyhedron_FaceHeight(q, f, vec3_lerp(t, h, lo));
+    du = vrPolyhedron_FaceHeight(q, f, vec3_lerp(t, h, hi));
     if ((dl < 0 && du > 0) || (dl > 0 && du < 0)) {
         vec3 c = vec3_lerp(t, h, lo + (hi - lo) * dl / (dl - du));
         return penetrating(w, 0, in_frame0(w, j, c));
@@ -422,11 +263,11 @@ static int edge_edge(Walk *w)
     vec3 b0 = vert_in_other(w, 1, e1[0]), b1 = vert_in_other(w, 1, e1[1]), c0, c1;
     double s, t;
     vrFeature nbr;
-    vrClosest_SegmentParams(a0, a1, b0, b1, &s, &t);
+    vrSegment_ClosestParams(a0, a1, b0, b1, &s, &t);
     c0 = vec3_lerp(a0, a1, s);
     c1 = vec3_lerp(b0, b1, t);
-    if (worst_violation(w->p[0], w->f[0], c1, w->tol, &nbr, &w->slack2)) return move(w, 0, nbr);
-    if (worst_violation(w->p[1], w->f[1], to_other(w, 0, c0), w->tol, &nbr, &w->slack2)) return move(w, 1, nbr);
+    if (vrVoronoi_Violation(w->p[0], w->f[0], c1, w->tol, &nbr, &w->slack2)) return move(w, 0, nbr);
+    if (vrVoronoi_Violation(w->p[1], w->f[1], to_other(w, 0, c0), w->tol, &nbr, &w->slack2)) return move(w, 1, nbr);
     return done(w, c0, c1);
 }
 
@@ -457,7 +298,7 @@ static void pair_points(const Walk *w, vec3 *c0, vec3 *c1)
         vec3 a0 = w->p[0]->vert[e0[0]], a1 = w->p[0]->vert[e0[1]];
         vec3 b0 = vert_in_other(w, 1, e1[0]), b1 = vert_in_other(w, 1, e1[1]);
         double s, t;
-        vrClosest_SegmentParams(a0, a1, b0, b1, &s, &t);
+        vrSegment_ClosestParams(a0, a1, b0, b1, &s, &t);
         *c0 = vec3_lerp(a0, a1, s);
         *c1 = vec3_lerp(b0, b1, t);
         return;
@@ -481,9 +322,9 @@ static int find_piercing(Walk *w, int i)
         vec3 t = vert_in_other(w, i, p->edge_v[e][0]), h = vert_in_other(w, i, p->edge_v[e][1]);
         for (f = 0; f < q->nf; f++) {
             double lo, hi, dl, du;
-            if (!clip_to_face(q, f, t, h, &lo, &hi)) continue;
-            dl = face_height(q, f, vec3_lerp(t, h, lo));
-            du = face_height(q, f, vec3_lerp(t, h, hi));
+            if (!vrVoronoi_ClipToFace(q, f, t, h, &lo, &hi)) continue;
+            dl = vrPolyhedron_FaceHeight(q, f, vec3_lerp(t, h, lo));
+            du = vrPolyhedron_FaceHeight(q, f, vec3_lerp(t, h, hi));
             if ((dl < 0 && du > 0) || (dl > 0 && du < 0)) {
                 w->f[i] = feat(VR_EDGE, e);
                 w->f[j] = feat(VR_FACE, f);
@@ -500,20 +341,10 @@ static int find_contained(Walk *w, int i)
     int j = 1 - i, f;
     vec3 x = vert_in_other(w, i, 0);
     for (f = 0; f < w->p[j]->nf; f++)
-        if (face_height(w->p[j], f, x) > 0) return GO;
+        if (vrPolyhedron_FaceHeight(w->p[j], f, x) > 0) return GO;
     w->f[i] = feat(VR_VERTEX, 0);
     w->f[j] = feat(VR_FACE, 0);
     return penetrating(w, 0, in_frame0(w, j, x));
-}
-
-static int in_prism(const vrPolyhedron *p, int f, vec3 x)
-{
-    int k, n = vrPolyhedron_FaceSize(p, f);
-    for (k = 0; k < n; k++) {
-        Plane pl = face_plane(p, f, k);
-        if (vec3_dot(pl.nrm, x) > pl.off) return 0;
-    }
-    return 1;
 }
 
 /* the separated minimum is attained by a vertex over a face or by two edges */
@@ -526,8 +357,8 @@ static void nearest_pair(Walk *w)
         for (v = 0; v < w->p[i]->nv; v++) {
             vec3 x = vert_in_other(w, i, v);
             for (f = 0; f < q->nf; f++) {
-                double h = face_height(q, f, x);
-                if (h < 0 || h >= best || !in_prism(q, f, x)) continue;
+                double h = vrPolyhedron_FaceHeight(q, f, x);
+                if (h < 0 || h >= best || !vrVoronoi_InPrism(q, f, x)) continue;
                 best = h;
                 w->f[i] = feat(VR_VERTEX, v);
                 w->f[1 - i] = feat(VR_FACE, f);
@@ -539,7 +370,7 @@ static void nearest_pair(Walk *w)
             vec3 a0 = w->p[0]->vert[w->p[0]->edge_v[e0][0]], a1 = w->p[0]->vert[w->p[0]->edge_v[e0][1]];
             vec3 b0 = vert_in_other(w, 1, w->p[1]->edge_v[e1][0]), b1 = vert_in_other(w, 1, w->p[1]->edge_v[e1][1]);
             double s, t, d;
-            vrClosest_SegmentParams(a0, a1, b0, b1, &s, &t);
+            vrSegment_ClosestParams(a0, a1, b0, b1, &s, &t);
             d = vec3_dist(vec3_lerp(a0, a1, s), vec3_lerp(b0, b1, t));
             if (d >= best) continue;
             best = d;
@@ -562,8 +393,8 @@ static int exhaustive(Walk *w)
 
 static int step_cap(const vrPolyhedron *p) { return 2 * (p->nv + p->ne + p->nf); }
 
-/* Ra^T Rb, spelt out by columns of Rb (the loop form with a transpose cost
- * a third of a coherent query) */
+/* Ra^T Rb, spelt out by columns of Rb: the walk's one 3x3 product a query,
+ * without forming the transpose */
 static mat33 relative_rotation(const mat33 *ra, const mat33 *rb)
 {
     mat33 r;
@@ -698,11 +529,11 @@ static int point_step(const vrPolyhedron *p, vrFeature *f, vec3 x, double tol)
 {
     vrFeature nbr;
     double smax;
-    if (worst_violation(p, *f, x, tol, &nbr, NULL)) {
+    if (vrVoronoi_Violation(p, *f, x, tol, &nbr, NULL)) {
         *f = nbr;
         return GO;
     }
-    if (f->type != VR_FACE || face_height(p, f->index, x) >= 0) return DONE;
+    if (f->type != VR_FACE || vrPolyhedron_FaceHeight(p, f->index, x) >= 0) return DONE;
     *f = feat(VR_FACE, highest_face(p, x, &smax));
     return smax <= 0 ? DONE : GO;
 }
@@ -725,8 +556,8 @@ static vrFeature point_exhaustive(const vrPolyhedron *p, vec3 x)
         if (d < best) best = d, f = feat(VR_EDGE, i);
     }
     for (i = 0; i < p->nf; i++) {
-        double h = face_height(p, i, x);
-        if (h >= 0 && h < best && in_prism(p, i, x)) best = h, f = feat(VR_FACE, i);
+        double h = vrPolyhedron_FaceHeight(p, i, x);
+        if (h >= 0 && h < best && vrVoronoi_InPrism(p, i, x)) best = h, f = feat(VR_FACE, i);
     }
     return f;
 }
@@ -754,7 +585,7 @@ static double point_query(const vrPolyhedron *a, const vrPose *pa, vec3 point, v
     if (steps) *steps = n;
     c = closest_on_feature(a, f, x);
     if (ca) *ca = vrPose_apply(pa, c);
-    if (f.type == VR_FACE) return face_height(a, f.index, x);
+    if (f.type == VR_FACE) return vrPolyhedron_FaceHeight(a, f.index, x);
     return vec3_dist(x, c);
 }
 
@@ -769,180 +600,3 @@ double vrClosest_ExhaustivePoint(const vrPolyhedron *a, const vrPose *pa, vec3 p
     return point_query(a, pa, point, cache, ca, NULL, 1);
 }
 
-/* ---- brute-force reference (tests only) ----------------------------------
- * Shares no geometry code with the walk: world-space vertices, faces as
- * triangle fans, closest point on a triangle by Voronoi regions of the
- * triangle, segment-segment distance as the minimum over its candidates. */
-
-static vec3 bf_closest_on_triangle(vec3 x, vec3 a, vec3 b, vec3 c)
-{
-    vec3 ab = vec3_sub(b, a), ac = vec3_sub(c, a), ax = vec3_sub(x, a), bx, cx;
-    double d1 = vec3_dot(ab, ax), d2 = vec3_dot(ac, ax), d3, d4, d5, d6, va, vb, vc, den;
-    if (d1 <= 0 && d2 <= 0) return a;
-    bx = vec3_sub(x, b);
-    d3 = vec3_dot(ab, bx);
-    d4 = vec3_dot(ac, bx);
-    if (d3 >= 0 && d4 <= d3) return b;
-    vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return vec3_madd(a, d1 / (d1 - d3), ab);
-    cx = vec3_sub(x, c);
-    d5 = vec3_dot(ab, cx);
-    d6 = vec3_dot(ac, cx);
-    if (d6 >= 0 && d5 <= d6) return c;
-    vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) return vec3_madd(a, d2 / (d2 - d6), ac);
-    va = d3 * d6 - d5 * d4;
-    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-        return vec3_madd(b, (d4 - d3) / ((d4 - d3) + (d5 - d6)), vec3_sub(c, b));
-    den = 1.0 / (va + vb + vc);
-    return vec3_add(a, vec3_add(vec3_scale(ab, vb * den), vec3_scale(ac, vc * den)));
-}
-
-static double bf_point_segment(vec3 x, vec3 a, vec3 b)
-{
-    vec3 d = vec3_sub(b, a);
-    double t = vec3_dot(vec3_sub(x, a), d) / vec3_len2(d);
-    t = t < 0 ? 0 : t > 1 ? 1 : t;
-    return vec3_dist(x, vec3_madd(a, t, d));
-}
-
-static double bf_segment_segment(vec3 a, vec3 b, vec3 c, vec3 d)
-{
-    vec3 u = vec3_sub(b, a), v = vec3_sub(d, c), w0 = vec3_sub(a, c);
-    double uu = vec3_dot(u, u), uv = vec3_dot(u, v), vv = vec3_dot(v, v);
-    double uw = vec3_dot(u, w0), vw = vec3_dot(v, w0), den = uu * vv - uv * uv;
-    double best = bf_point_segment(a, c, d), m;
-    if ((m = bf_point_segment(b, c, d)) < best) best = m;
-    if ((m = bf_point_segment(c, a, b)) < best) best = m;
-    if ((m = bf_point_segment(d, a, b)) < best) best = m;
-    if (den > 0) { /* the interior critical point of the two lines */
-        double s = (uv * vw - vv * uw) / den, t = (uu * vw - uv * uw) / den;
-        if (s > 0 && s < 1 && t > 0 && t < 1) {
-            m = vec3_dist(vec3_madd(a, s, u), vec3_madd(c, t, v));
-            if (m < best) best = m;
-        }
-    }
-    return best;
-}
-
-/* segment pq through triangle abc of normal n = (b - a) x (c - a) */
-static int bf_segment_hits_triangle(vec3 p, vec3 q, vec3 a, vec3 b, vec3 c, vec3 n)
-{
-    vec3 x;
-    double dp = vec3_dot(n, vec3_sub(p, a)), dq = vec3_dot(n, vec3_sub(q, a));
-    if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0) || dp == dq) return 0;
-    x = vec3_lerp(p, q, dp / (dp - dq));
-    return vec3_dot(n, vec3_cross(vec3_sub(b, a), vec3_sub(x, a))) >= 0
-        && vec3_dot(n, vec3_cross(vec3_sub(c, b), vec3_sub(x, b))) >= 0
-        && vec3_dot(n, vec3_cross(vec3_sub(a, c), vec3_sub(x, c))) >= 0;
-}
-
-/* a polyhedron in world space, with bounding spheres of its edges that let
- * the search skip pairs that cannot beat the best so far */
-typedef struct BfBody {
-    const vrPolyhedron *p;
-    vec3 *w;        /* nv world vertices */
-    vec3 *mid;      /* ne edge midpoints */
-    double *half;   /* ne half lengths */
-} BfBody;
-
-static int bf_body(BfBody *b, const vrPolyhedron *p, const vrPose *pose)
-{
-    int i;
-    b->p = p;
-    b->w = malloc((size_t)p->nv * sizeof *b->w);
-    b->mid = malloc((size_t)p->ne * sizeof *b->mid);
-    b->half = malloc((size_t)p->ne * sizeof *b->half);
-    if (!b->w || !b->mid || !b->half) return -1;
-    for (i = 0; i < p->nv; i++) b->w[i] = vrPose_apply(pose, p->vert[i]);
-    for (i = 0; i < p->ne; i++) {
-        vec3 t = b->w[p->edge_v[i][0]], h = b->w[p->edge_v[i][1]];
-        b->mid[i] = vec3_lerp(t, h, 0.5);
-        b->half[i] = 0.5 * vec3_dist(t, h);
-    }
-    return 0;
-}
-
-static void bf_body_free(BfBody *b)
-{
-    free(b->w);
-    free(b->mid);
-    free(b->half);
-}
-
-/* min over vertices of p over faces of q (as triangle fans), or 0 when an
- * edge of p crosses a face of q; fan triangles of no area are skipped (their
- * boundary edges are covered by the edge-edge pairs) */
-static double bf_one_way(const BfBody *p, const BfBody *q)
-{
-    double best = HUGE_VAL;
-    int v, e, f, k;
-    for (f = 0; f < q->p->nf; f++)
-        for (k = 1; k + 1 < vrPolyhedron_FaceSize(q->p, f); k++) {
-            const int *fv = q->p->face_vert + q->p->face_start[f];
-            vec3 a = q->w[fv[0]], b = q->w[fv[k]], c = q->w[fv[k + 1]];
-            vec3 n = vec3_cross(vec3_sub(b, a), vec3_sub(c, a)), o = vec3_scale(vec3_add(a, vec3_add(b, c)), 1.0 / 3);
-            double rho = vec3_dist(o, a), m;
-            if ((m = vec3_dist(o, b)) > rho) rho = m;
-            if ((m = vec3_dist(o, c)) > rho) rho = m;
-            if (vec3_len2(n) <= 1e-30) continue;
-            for (e = 0; e < p->p->ne; e++)
-                if (vec3_dist(p->mid[e], o) <= rho + p->half[e]
-                    && bf_segment_hits_triangle(p->w[p->p->edge_v[e][0]], p->w[p->p->edge_v[e][1]], a, b, c, n))
-                    return 0;
-            for (v = 0; v < p->p->nv; v++) {
-                double d;
-                if (vec3_dist(p->w[v], o) - rho >= best) continue;
-                d = vec3_dist(p->w[v], bf_closest_on_triangle(p->w[v], a, b, c));
-                if (d < best) best = d;
-            }
-        }
-    return best;
-}
-
-static double bf_edges(const BfBody *a, const BfBody *b, double best)
-{
-    int i, j;
-    for (i = 0; i < a->p->ne; i++)
-        for (j = 0; j < b->p->ne; j++) {
-            double d;
-            if (vec3_dist(a->mid[i], b->mid[j]) - a->half[i] - b->half[j] >= best) continue;
-            d = bf_segment_segment(a->w[a->p->edge_v[i][0]], a->w[a->p->edge_v[i][1]], b->w[b->p->edge_v[j][0]],
-                                   b->w[b->p->edge_v[j][1]]);
-            if (d < best) best = d;
-        }
-    return best;
-}
-
-/* world point x inside q: beneath every face plane, each plane taken from
- * the face's vertices by Newell's method */
-static int bf_inside(const BfBody *q, vec3 x)
-{
-    int f, k;
-    for (f = 0; f < q->p->nf; f++) {
-        const int *fv = q->p->face_vert + q->p->face_start[f];
-        int m = vrPolyhedron_FaceSize(q->p, f);
-        vec3 n = vec3_zero();
-        for (k = 0; k < m; k++) n = vec3_add(n, vec3_cross(q->w[fv[k]], q->w[fv[(k + 1) % m]]));
-        if (vec3_dot(n, vec3_sub(x, q->w[fv[0]])) > 0) return 0;
-    }
-    return 1;
-}
-
-double vrClosest_BruteForce(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb)
-{
-    BfBody ba = {NULL, NULL, NULL, NULL}, bb = ba;
-    double best = HUGE_VAL, d;
-    if (bf_body(&ba, a, pa) == 0 && bf_body(&bb, b, pb) == 0) {
-        if (bf_inside(&bb, ba.w[0]) || bf_inside(&ba, bb.w[0])) {
-            best = 0;
-        } else {
-            best = bf_one_way(&ba, &bb);
-            if (best > 0 && (d = bf_one_way(&bb, &ba)) < best) best = d;
-            if (best > 0) best = bf_edges(&ba, &bb, best);
-        }
-    }
-    bf_body_free(&ba);
-    bf_body_free(&bb);
-    return best;
-}

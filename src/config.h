@@ -6,6 +6,7 @@
 
 #include "vroc.h"
 #include "owner.h"
+#include "polyhedron.h"
 
 /* a definition's or a setting's vector (double[3]) as a vec3 */
 static inline vec3 vrVec3_Of(const double a[3]) { return vec3_make(a[0], a[1], a[2]); }

@@ -1,62 +1,34 @@
 /* contact.h — distance, normal and contact region of a pair of posed shapes
- * (SPEC 2, thesis 3.2.1).
+ * (SPEC 2, thesis 3.2.1): what the owner (gp.c), the rest test and the
+ * bodies use.
  *
- * The walk (closest.c, Lin–Canny / V-Clip) only FINDS the closest features,
+ * The walk (closest.h, Lin–Canny / V-Clip) only FINDS the closest features,
  * starting from the pair's cached features.  What this module returns is a
  * pure function of the two shapes and their poses, never of where the cache
  * started or which feature the walk ended on: distances and normals are
- * recomputed from canonical support features (see contact.c).  Determinism
+ * recomputed from canonical support features (canonical.c).  Determinism
  * between heap on/off and between serial and parallel runs depends on it.
  *
  * The pair is always evaluated with the lower-indexed object as `a`.
  *
- * The canonical rule (contact.c): from the walk's direction, each body's
+ * The canonical rule (canonical.c): from the walk's direction, each body's
  * near-support set (vertices within 1e-9 m of its supporting plane) is a
  * vertex, an edge or a face; the normal is a's face normal, else minus b's,
  * else edge x edge, else the closest points of the two features; the
- * distance follows from the same features.  Spheres are true spheres.
+ * distance follows from the same features.  Spheres are true spheres
+ * (sphere.c).
  *
- * Cost (coherent, this machine, make bench): the walk ~0.1 us, Distance
- * ~0.4-0.6 us, Region ~1 us for a box flat on a table.  No static state:
- * any number of threads or processes may query different pairs at once
- * (a cache belongs to one pair and one caller at a time).
+ * No static state: any number of threads or processes may query different
+ * pairs at once (a cache belongs to one pair and one caller at a time).
  */
 #ifndef VROC_CONTACT_H
 #define VROC_CONTACT_H
 
-#include "polyhedron.h"
+#include <stddef.h> /* NULL: caches and outputs that may be NULL */
 
-typedef enum { VR_SHAPE_SPHERE, VR_SHAPE_BOX, VR_SHAPE_POLY } vrShapeKind;
-
-/* What collides.  A sphere collides as a true sphere (its mesh is only for
- * drawing); a box is a polyhedron with closed forms against spheres. */
-typedef struct vrShape {
-    vrShapeKind kind;
-    double radius;              /* sphere */
-    vec3 half;                  /* box half extents */
-    const vrPolyhedron *poly;   /* box and poly: the hull, body frame */
-    unsigned long serial;       /* which making of the shape (a new one for every edit that
-                                   remakes it): what a memo of contacts keys on, not the
-                                   address, which a new hull may reuse */
-} vrShape;
-
-typedef struct vrFeature { int type; int index; } vrFeature; /* VR_VERTEX / VR_EDGE / VR_FACE */
-
-/* a vertex of feature f: where a search on p's graph starts */
-static inline int vrFeature_Vertex(const vrPolyhedron *p, vrFeature f)
-{
-    return f.type == VR_VERTEX ? f.index : f.type == VR_EDGE ? p->edge_v[f.index][0] : p->face_vert[p->face_start[f.index]];
-}
-
-/* Per-pair memory of the walk: where the last query ended.  All zero bytes
- * is a valid "start anywhere" state (vertex 0 / vertex 0); so is any stale or
- * out-of-range content.  Only speed depends on it, never a result.
- * `fallbacks` counts queries that ended by exhaustive search: the walk hit
- * its step cap, or the plane between its closest points did not separate
- * the bodies that far (closest.c, separated); expected 0, tests check it. */
-typedef struct vrWalkCache { vrFeature a, b; int valid; unsigned fallbacks; } vrWalkCache;
-
-#define VR_REGION_MAX 64
+#include "closest.h"
+#include "region.h"
+#include "shape.h"
 
 typedef struct vrContact {
     double dist;     /* separation distance; <= 0: penetration, dist = -depth */
@@ -131,63 +103,5 @@ int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const 
  * touch or overlap. */
 int vrContact_Within(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
                      vrWalkCache *cache, double d, vrContact *seen);
-
-/* The posed shape's point farthest along dir (non-zero): a sphere's surface
- * point, a polyhedron's vertex (the first of equals; O(vertices)).  libccd's
- * support function, and how far a shape reaches along a direction. */
-vec3 vrShape_Support(const vrShape *s, const vrPose *p, vec3 dir);
-
-/* Is q inside the convex hull of pts (n of them) seen along nrm, within tol?  (SPEC 3.1: a support's centre of mass over
- * its contact region.) */
-int vrRegion_Contains(const vec3 *pts, int n, vec3 nrm, vec3 q, double tol);
-/* How far q lies inside that hull (negative: outside by that much; a
- * point or segment hull gives minus q's distance to it; -INFINITY when out
- * of memory).  Contains is Margin >= -tol. */
-double vrRegion_Margin(const vec3 *pts, int n, vec3 nrm, vec3 q);
-
-/* Penetration depth and direction by libccd's MPR (penetration.c): called by
- * the above when polyhedra overlap (spheres use closed forms); exposed for
- * tests.  Returns 0 when they overlap (depth >= 0, unit dir from a toward b:
- * translating b by depth * dir makes them touch, pos a point in the overlap),
- * -1 when they do not.  MPR's depth is along the portal it refines from the
- * centre line: exact for spheres, not always the minimum for polyhedra. */
-int vrPenetration(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
-                  double *depth, vec3 *dir, vec3 *pos);
-
-/* The closest-feature walk itself (closest.c, V-Clip).  Returns the distance
- * between the features it ends on, the closest points ca, cb (world), and the
- * number of feature steps taken; when it finds the polyhedra overlapping,
- * *penetrating = 1, the result is <= 0 (not a depth: use vrPenetration) and
- * ca = cb is a point of the overlap.  cache may be NULL (start at vertex
- * 0 / vertex 0); ca, cb, steps, penetrating may be NULL.  The features it
- * ends on are left in the cache: in degenerate ties (parallel faces) they
- * depend on where it started, the distance does not.
- *
- * vrClosest_WalkPoint walks polyhedron a against a point (sphere centres):
- * the distance, or when the point is inside minus its distance to the
- * nearest face plane (the exact depth of a point), and the closest point ca
- * of a's surface (may be NULL).  The cache's `a` holds a's feature. */
-double vrClosest_Walk(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb,
-                      vrWalkCache *cache, vec3 *ca, vec3 *cb, int *steps, int *penetrating);
-double vrClosest_WalkPoint(const vrPolyhedron *a, const vrPose *pa, vec3 point,
-                           vrWalkCache *cache, vec3 *ca, int *steps);
-
-/* What the walks do when they hit their step cap (counted in
- * cache->fallbacks): search every feature pair, O(E F); same results and
- * cache update.  Exposed so that tests can check this rarely taken path. */
-double vrClosest_Exhaustive(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb,
-                            vrWalkCache *cache, vec3 *ca, vec3 *cb, int *penetrating);
-double vrClosest_ExhaustivePoint(const vrPolyhedron *a, const vrPose *pa, vec3 point, vrWalkCache *cache, vec3 *ca);
-
-/* Reference distance by brute force over all feature pairs (tests only):
- * 0 when the polyhedra touch or overlap. */
-double vrClosest_BruteForce(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb);
-
-/* Segment helpers shared by closest.c and contact.c (fixed formulas, so
- * both give the same bits).  Parameters in [0, 1] of the closest points of
- * segments p0p1 and q0q1 (parallel segments: the middle of their overlap),
- * and of the point of p0p1 closest to x. */
-void vrClosest_SegmentParams(vec3 p0, vec3 p1, vec3 q0, vec3 q1, double *s, double *t);
-double vrClosest_PointSegmentParam(vec3 p0, vec3 p1, vec3 x);
 
 #endif

@@ -9,7 +9,7 @@
  *     int x_i x_j dV = V/20 * (sum_k p_k,i p_k,j + s_i s_j),  s = a + b + c.
  * Principal axes by cyclic Jacobi rotations (Golub & Van Loan, sec. 8.5).
  */
-#include "polyhedron.h"
+#include "mass.h"
 
 /* calls fn(a, b, c, ctx) for every triangle of a fan over every face */
 typedef void (*TriangleFn)(vec3 a, vec3 b, vec3 c, void *ctx);

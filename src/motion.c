@@ -14,6 +14,7 @@
  * queries cost only the steps between them.
  */
 #include "body.h"
+#include "mass.h"
 
 #define ISOTROPY_TOL 1e-12     /* relative difference of moments taken as equal */
 #define CHECKPOINT_EVERY 64

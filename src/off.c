@@ -18,7 +18,8 @@
 #include <stdio.h>
 #include <ctype.h>
 #include "grow.h"
-#include "polyhedron.h"
+#include "hull.h"
+#include "off.h"
 
 #define OFF_TOL 1e-6
 #define OFF_MAX_COUNT 100000000 /* keeps every size an int */
@@ -267,12 +268,6 @@ static int read_off(const char *path, Off *o, char *err, size_t errlen)
 
 /* ---- convexity ------------------------------------------------------------ */
 
-/* how far x is above the plane of hull face f (x in the hull's frame) */
-static double above_face(const vrPolyhedron *p, int f, vec3 x)
-{
-    return vec3_dot(p->face_normal[f], x) - p->face_offset[f];
-}
-
 /* every vertex that is not a hull vertex must lie on the hull's surface */
 static int check_vertices(const Off *o, const vrPolyhedron *p, const int *hullv, double tol, const char *path,
                           char *err, size_t errlen)
@@ -283,7 +278,7 @@ static int check_vertices(const Off *o, const vrPolyhedron *p, const int *hullv,
         double depth = -INFINITY;
         if (hullv[i] >= 0) continue;
         for (f = 0; f < p->nf; f++)
-            if (above_face(p, f, x) > depth) depth = above_face(p, f, x);
+            if (vrPolyhedron_FaceHeight(p, f, x) > depth) depth = vrPolyhedron_FaceHeight(p, f, x);
         if (depth < -tol)
             return vrGeom_Fail(err, errlen, "%s:%d: not convex (vertex %d lies %.3g inside the hull)", path,
                                o->vline[i], i, -depth);
@@ -297,7 +292,7 @@ static double face_gap(const Off *o, const vrPolyhedron *p, int g, int f)
     double gap = 0;
     int k;
     for (k = o->fstart[g]; k < o->fstart[g + 1]; k++) {
-        double d = fabs(above_face(p, f, vec3_sub(o->v[o->fvert[k]], p->shift)));
+        double d = fabs(vrPolyhedron_FaceHeight(p, f, vec3_sub(o->v[o->fvert[k]], p->shift)));
         if (d > gap) gap = d;
     }
     return gap;

@@ -12,7 +12,7 @@
  */
 #include <ccd/ccd.h>
 
-#include "contact.h"
+#include "penetration.h"
 
 /* the MPR stopping tolerance (m); libccd's default 1e-4 is coarse for 1 cm
  * objects */

@@ -11,6 +11,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "table.h"
+#include "off.h"
 #include "config.h"
 
 vrObject *vrTable_Get(const vrTable *t, int id)

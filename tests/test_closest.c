@@ -5,6 +5,11 @@
 #include <unistd.h>
 
 #include "contact.h"
+#include "brute_distance.h"
+#include "hull.h"
+#include "off.h"
+#include "penetration.h"
+#include "primitives.h"
 #include "test.h"
 
 /* ---- fixtures --------------------------------------------------------- */

@@ -4,6 +4,10 @@
 #include <string.h>
 
 #include "contact.h"
+#include "brute_distance.h"
+#include "hull.h"
+#include "penetration.h"
+#include "primitives.h"
 #include "test.h"
 
 /* ---- fixtures --------------------------------------------------------- */

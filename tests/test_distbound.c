@@ -5,6 +5,7 @@
 #include "test.h"
 #include "distbound.h"
 #include "scene.h"
+#include "primitives.h"
 
 #define TEST_LCG_SEED 0xD15B0D5ULL
 #include "test_lcg.h"

@@ -3,7 +3,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "polyhedron.h"
+#include "hull.h"
+#include "mass.h"
+#include "off.h"
+#include "primitives.h"
 #include "test.h"
 
 static char err[512];

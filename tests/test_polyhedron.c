@@ -4,7 +4,9 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
-#include "polyhedron.h"
+#include "hull.h"
+#include "off.h"
+#include "primitives.h"
 #include "test.h"
 
 static char err[512];

@@ -6,6 +6,7 @@
 #include "schedule.h"
 #include "owner.h"
 #include "scene.h"
+#include "primitives.h"
 
 #define TEST_LCG_SEED 777ULL
 #include "test_lcg.h"

@@ -1,19 +1,20 @@
 /* test_support.c — the face shortcut of the support-feature search.
  *
- * contact.c takes the walk's face as a body's support feature at once when
+ * canonical.c takes the walk's face as a body's support feature at once when
  * the direction is so near its normal that the search could find nothing
- * else (face_is_support).  That rule is internal, so this file includes
- * contact.c to call both ways on the same direction: from the face (the
+ * else (face_is_support).  That rule is internal, so this file calls the
+ * search (canonical.h) both ways on the same direction: from the face (the
  * shortcut may apply) and from one of its vertices (the search always runs).
  */
-#include "../src/contact.c"
+#include "canonical.h"
+#include "primitives.h"
 #include "test.h"
 
 #define TEST_LCG_SEED 0x9E3779B97F4A7C15ULL
 #include "test_lcg.h"
 
 /* the same feature and the same vertices */
-static int same_support(const Support *x, const Support *y)
+static int same_support(const vrSupportFeature *x, const vrSupportFeature *y)
 {
     return x->kind == y->kind && x->index == y->index && x->v.n == y->v.n
         && memcmp(x->v.v, y->v.v, (size_t)x->v.n * sizeof x->v.v[0]) == 0;
@@ -40,23 +41,24 @@ static int test_face_shortcut_equals_the_search(void)
     for (s = 0; s < 5; s++)
         for (f = 0; f < p[s]->nf; f++)
             for (k = 0; k < (int)(sizeof tilt / sizeof tilt[0]); k++) {
-                Body b;
-                Support fast, search;
+                vrPosed b;
+                vrSupportFeature fast, search;
                 vec3 n = p[s]->face_normal[f], t1 = vec3_orthogonal(n), t2 = vec3_cross(n, t1);
                 double phi = 2 * VR_PI * uni();
                 vec3 axis = vec3_add(vec3_scale(t1, cos(phi)), vec3_scale(t2, sin(phi)));
                 vec3 dir = quat_rotate(quat_from_axis_angle(axis, tilt[k]), n);
                 vrFeature face = {VR_FACE, f}, vertex = {VR_VERTEX, p[s]->face_vert[p[s]->face_start[f]]};
                 b.p = p[s], b.pose = &at0;
-                set_init(&fast.v);
-                set_init(&search.v);
-                ENSURE(support_feature(&b, dir, face, &fast) == 0 && support_feature(&b, dir, vertex, &search) == 0);
+                vrIntSet_Init(&fast.v);
+                vrIntSet_Init(&search.v);
+                ENSURE(vrSupportFeature_Find(&b, dir, face, &fast) == 0
+                       && vrSupportFeature_Find(&b, dir, vertex, &search) == 0);
                 ENSURE_MSG(same_support(&fast, &search), "shape %d face %d tilt %g: kind %d/%d index %d/%d, %d/%d vertices",
                            s, f, tilt[k], fast.kind, search.kind, fast.index, search.index, fast.v.n, search.v.n);
                 if (fast.kind == VR_FACE && fast.index == f) faces++;
                 else others++;
-                set_free(&fast.v);
-                set_free(&search.v);
+                vrIntSet_Free(&fast.v);
+                vrIntSet_Free(&search.v);
             }
     printf("    the face itself %d times, another feature %d times\n", faces, others);
     ENSURE(faces > 0 && others > 0);

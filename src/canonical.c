@@ -1,0 +1,410 @@
+/* canonical.c — the canonical support features and the canonical distance
+ * and normal of a posed pair of polyhedra (SPEC 2 "Contact region", SPEC 3.2
+ * determinism rules, thesis 3.2.1).
+ *
+ * The walk (closest.c) only finds A closest feature pair.  When faces are
+ * parallel many pairs are equally closest (a box flat on a table: vertex-
+ * face, edge-face, face-face), and which one the walk ends on depends on
+ * where its cache started.  So nothing is taken from the walk's result but
+ * a direction (vrGap_WalkDirection): from it we build each body's
+ * near-support set (vertices within SUPPORT_TOL of the supporting plane),
+ * classify it as a vertex, an edge or a face (vrSupportFeature_Find), and
+ * compute distance, normal and closest points from those features and the
+ * poses alone, by fixed formulas (vrCanon_Compute):
+ *   a's face -> its normal;  else b's face -> minus its normal;
+ *   edge x edge (not parallel) -> the cross product;
+ *   otherwise the closest points of the two features.
+ * The contact region (region.c) is built from the same features.  (Left to
+ * chance: a set member within rounding of the 1e-9 m threshold.)
+ *   set_has, set_add, set_sort       small sets of vertex indices
+ *   support_set                      the near-support set
+ *   edge_between, face_of_set,       the feature a set is
+ *   set_to_face, face_is_support
+ *   face_against, edge_edge_normal,  the normal and distance by the kinds of
+ *   point_features                   the two features
+ *   support_height, try_faces,       separation along a direction; the
+ *   try_edges                        candidates for the walk's direction
+ *
+ * No static state; scratch memory lives on the stack unless a set outgrows
+ * its inline buffer.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "canonical.h"
+#include "polyhedron.h"
+#include "segment.h"
+
+#define SUPPORT_TOL 1e-9   /* tau: near-support set tolerance (m) */
+#define PARALLEL_SIN2 1e-12
+
+/* ---- small sets of vertex indices ------------------------------------- */
+
+void vrIntSet_Init(vrIntSet *s)
+{
+    s->n = 0;
+    s->cap = (int)(sizeof s->buf / sizeof s->buf[0]);
+    s->v = s->buf;
+}
+
+void vrIntSet_Free(vrIntSet *s)
+{
+    if (s->v != s->buf) free(s->v);
+    vrIntSet_Init(s);
+}
+
+static int set_has(const vrIntSet *s, int x)
+{
+    int i;
+    for (i = 0; i < s->n; i++)
+        if (s->v[i] == x) return 1;
+    return 0;
+}
+
+static int set_add(vrIntSet *s, int x)
+{
+    if (s->n == s->cap) {
+        int *v = malloc(2 * (size_t)s->cap * sizeof *v);
+        if (!v) return -1;
+        memcpy(v, s->v, (size_t)s->n * sizeof *v);
+        if (s->v != s->buf) free(s->v);
+        s->v = v;
+        s->cap *= 2;
+    }
+    s->v[s->n++] = x;
+    return 0;
+}
+
+static void set_sort(vrIntSet *s)
+{
+    int i, j;
+    for (i = 1; i < s->n; i++) {
+        int x = s->v[i];
+        for (j = i; j > 0 && s->v[j - 1] > x; j--) s->v[j] = s->v[j - 1];
+        s->v[j] = x;
+    }
+}
+
+/* ---- a posed polyhedron's near-support set ---------------------------------- */
+
+/* Breadth-first search from `seed` over the vertices with d.v >= floor (body
+ * frame).  On a convex polytope this set is connected whenever it holds the
+ * top vertex: every other vertex has a higher neighbour. */
+int vrIntSet_Collect(const vrPolyhedron *p, vec3 d, int seed, double floor, vrIntSet *out)
+{
+    int i, k;
+    if (set_add(out, seed)) return -1;
+    for (i = 0; i < out->n; i++) {
+        int v = out->v[i];
+        for (k = p->vert_edge_start[v]; k < p->vert_edge_start[v + 1]; k++) {
+            int w = vrPolyhedron_OtherEnd(p, p->vert_edge[k], v);
+            if (vec3_dot(d, p->vert[w]) >= floor && !set_has(out, w) && set_add(out, w)) return -1;
+        }
+    }
+    return 0;
+}
+
+/* The near-support set of b in world direction dir: the vertices within
+ * SUPPORT_TOL of the highest, ascending.  The filter after the search makes
+ * the set independent of which top vertex the climb reached. */
+static int support_set(const vrPosed *b, vec3 dir, int start, vrIntSet *out)
+{
+    vec3 d = mat33_tmulv(&b->pose->R, dir);
+    double top, gap;
+    int v = vrPolyhedron_Climb(b->p, d, start, &gap), i, n = 0;
+    if (gap > SUPPORT_TOL) return set_add(out, v); /* a lone top vertex: the common case */
+    if (vrIntSet_Collect(b->p, d, v, vec3_dot(d, b->p->vert[v]) - SUPPORT_TOL, out)) return -1;
+    top = vec3_dot(d, b->p->vert[out->v[0]]);
+    for (i = 1; i < out->n; i++)
+        if (vec3_dot(d, b->p->vert[out->v[i]]) > top) top = vec3_dot(d, b->p->vert[out->v[i]]);
+    for (i = 0; i < out->n; i++)
+        if (vec3_dot(d, b->p->vert[out->v[i]]) >= top - SUPPORT_TOL) out->v[n++] = out->v[i];
+    out->n = n;
+    set_sort(out);
+    return 0;
+}
+
+/* ---- support features ----------------------------------------------------- */
+
+static int edge_between(const vrPolyhedron *p, int v, int w)
+{
+    int k;
+    for (k = p->vert_edge_start[v]; k < p->vert_edge_start[v + 1]; k++)
+        if (vrPolyhedron_OtherEnd(p, p->vert_edge[k], v) == w) return p->vert_edge[k];
+    return -1;
+}
+
+static int face_within(const vrPolyhedron *p, int f, const vrIntSet *s)
+{
+    int k;
+    for (k = p->face_start[f]; k < p->face_start[f + 1]; k++)
+        if (!set_has(s, p->face_vert[k])) return 0;
+    return 1;
+}
+
+/* the face around s's vertices whose vertices all lie in s: an exact match
+ * if there is one, else the one facing d best (lowest index on ties); -1 if none */
+static int face_of_set(const vrPolyhedron *p, vec3 d, const vrIntSet *s)
+{
+    int i, k, j, best = -1;
+    double bestv = -HUGE_VAL;
+    for (i = 0; i < s->n; i++)
+        for (k = p->vert_edge_start[s->v[i]]; k < p->vert_edge_start[s->v[i] + 1]; k++)
+            for (j = 0; j < 2; j++) {
+                int f = p->edge_f[p->vert_edge[k]][j];
+                double fv = vec3_dot(d, p->face_normal[f]);
+                if (!face_within(p, f, s)) continue;
+                if (vrPolyhedron_FaceSize(p, f) == s->n) return f;
+                if (fv > bestv || (fv == bestv && f < best)) bestv = fv, best = f;
+            }
+    return best;
+}
+
+static int set_to_face(const vrPolyhedron *p, int f, vrIntSet *s)
+{
+    int k;
+    s->n = 0;
+    for (k = p->face_start[f]; k < p->face_start[f + 1]; k++)
+        if (set_add(s, p->face_vert[k])) return -1;
+    set_sort(s);
+    return 0;
+}
+
+/* Does body-frame direction d have exactly face f's vertices as its
+ * near-support set?  Yes when d is so near f's normal that, with the face's
+ * spread, they stay within SUPPORT_TOL of one another and every other vertex
+ * stays more than SUPPORT_TOL below them (rounding allowed for): then the
+ * search below would find f, so it need not run. */
+static int face_is_support(const vrPolyhedron *p, vec3 d, int f)
+{
+    double slack = 2 * (vec3_dist(d, p->face_normal[f]) + 1e-12) * p->r_out + 1e-12;
+    return p->face_spread[f] + slack < SUPPORT_TOL && p->face_drop[f] - slack > SUPPORT_TOL;
+}
+
+/* The support feature of b along world dir (Mirtich's features), searched
+ * from the walk's feature `from`: 1 vertex, 2 = an edge, >= 3 = a face.
+ * Sets that are none of these (tolerance corner cases) fall back to a face
+ * inside the set, or to its highest vertex.  When the walk ended on a face
+ * that is the support (a box on a table), it is taken at once. */
+int vrSupportFeature_Find(const vrPosed *b, vec3 dir, vrFeature from, vrSupportFeature *s)
+{
+    const vrPolyhedron *p = b->p;
+    vec3 d = mat33_tmulv(&b->pose->R, dir);
+    if (from.type == VR_FACE && from.index >= 0 && from.index < p->nf && face_is_support(p, d, from.index)) {
+        s->kind = VR_FACE;
+        s->index = from.index;
+        return set_to_face(p, s->index, &s->v);
+    }
+    if (support_set(b, dir, vrFeature_Vertex(p, from), &s->v)) return -1;
+    if (s->v.n == 2 && (s->index = edge_between(p, s->v.v[0], s->v.v[1])) >= 0) {
+        s->kind = VR_EDGE;
+        return 0;
+    }
+    if (s->v.n >= 3 && (s->index = face_of_set(p, d, &s->v)) >= 0) {
+        s->kind = VR_FACE;
+        return set_to_face(p, s->index, &s->v);
+    }
+    s->kind = VR_VERTEX;
+    s->index = s->v.n == 1 ? s->v.v[0] : vrPolyhedron_Climb(p, d, s->v.v[0], NULL);
+    s->v.n = 0;
+    return set_add(&s->v, s->index);
+}
+
+/* ---- canonical distance and normal ---------------------------------------- */
+
+void vrCanon_Init(vrCanon *c)
+{
+    vrIntSet_Init(&c->sa.v);
+    vrIntSet_Init(&c->sb.v);
+}
+
+void vrCanon_Free(vrCanon *c)
+{
+    vrIntSet_Free(&c->sa.v);
+    vrIntSet_Free(&c->sb.v);
+}
+
+/* world plane n.x = h of face f */
+vec3 vrPosed_FacePlane(const vrPosed *b, int f, double *h)
+{
+    vec3 n = vrPose_rotate(b->pose, b->p->face_normal[f]);
+    *h = b->p->face_offset[f] + vec3_dot(n, b->pose->p);
+    return n;
+}
+
+static double min_height(const vrPosed *b, const vrIntSet *s, vec3 n)
+{
+    double m = HUGE_VAL;
+    int i;
+    for (i = 0; i < s->n; i++) {
+        double h = vec3_dot(n, vrPosed_Vertex(b, s->v[i]));
+        if (h < m) m = h;
+    }
+    return m;
+}
+
+static vec3 centroid(const vrPosed *b, const vrIntSet *s)
+{
+    vec3 c = vec3_zero();
+    int i;
+    for (i = 0; i < s->n; i++) c = vec3_add(c, vrPosed_Vertex(b, s->v[i]));
+    return vec3_scale(c, 1.0 / s->n);
+}
+
+/* a face of `fb` (world plane n.x = h) against the support set of `other`:
+ * distance from the lowest vertex, closest points from the set's centroid */
+static double face_against(const vrPosed *other, const vrIntSet *s, vec3 n, double h, vec3 *q_face, vec3 *q_other)
+{
+    double dist = min_height(other, s, n) - h;
+    *q_other = centroid(other, s);
+    *q_face = vec3_madd(*q_other, -(vec3_dot(n, *q_other) - h), n);
+    return dist;
+}
+
+/* end points of a vertex or edge support feature, world (a vertex twice) */
+void vrSupportFeature_Segment(const vrPosed *b, const vrSupportFeature *s, vec3 *p0, vec3 *p1)
+{
+    int t = s->kind == VR_EDGE ? b->p->edge_v[s->index][0] : s->index;
+    int h = s->kind == VR_EDGE ? b->p->edge_v[s->index][1] : s->index;
+    *p0 = vrPosed_Vertex(b, t);
+    *p1 = vrPosed_Vertex(b, h);
+}
+
+/* edge x edge: n = normalised cross product of the stored edges, pointing
+ * from a's centre side to b's; 0 when the edges are parallel */
+static int edge_edge_normal(const vrPosed *a, const vrPosed *b, vrCanon *c)
+{
+    vec3 a0, a1, b0, b1, ea, eb, n;
+    double s, t;
+    vrSupportFeature_Segment(a, &c->sa, &a0, &a1);
+    vrSupportFeature_Segment(b, &c->sb, &b0, &b1);
+    ea = vec3_sub(a1, a0);
+    eb = vec3_sub(b1, b0);
+    n = vec3_cross(ea, eb);
+    if (vec3_len2(n) <= PARALLEL_SIN2 * vec3_len2(ea) * vec3_len2(eb)) return 0;
+    n = vec3_normalize(n);
+    if (vec3_dot(n, vec3_sub(b->pose->p, a->pose->p)) < 0) n = vec3_neg(n);
+    c->n = n;
+    c->ha = vec3_dot(n, a0);
+    c->hb = vec3_dot(n, b0);
+    c->dist = c->hb - c->ha;
+    vrSegment_ClosestParams(a0, a1, b0, b1, &s, &t);
+    c->qa = vec3_lerp(a0, a1, s);
+    c->qb = vec3_lerp(b0, b1, t);
+    return 1;
+}
+
+/* vertex / edge combinations and parallel edges: the closest points of the
+ * two features by the fixed segment formula */
+static void point_features(const vrPosed *a, const vrPosed *b, vrCanon *c)
+{
+    vec3 a0, a1, b0, b1;
+    double s, t;
+    vrSupportFeature_Segment(a, &c->sa, &a0, &a1);
+    vrSupportFeature_Segment(b, &c->sb, &b0, &b1);
+    vrSegment_ClosestParams(a0, a1, b0, b1, &s, &t);
+    c->qa = vec3_lerp(a0, a1, s);
+    c->qb = vec3_lerp(b0, b1, t);
+    c->dist = vec3_dist(c->qa, c->qb);
+    c->n = vec3_normalize(vec3_sub(c->qb, c->qa));
+    c->ha = -min_height(a, &c->sa.v, vec3_neg(c->n));
+    c->hb = min_height(b, &c->sb.v, c->n);
+}
+
+/* Steps 2-4 of the rule: support features along dir (a) and -dir (b),
+ * then normal and distance from them. */
+int vrCanon_Compute(const vrPosed *a, const vrPosed *b, vec3 dir, vrFeature fa, vrFeature fb, vrCanon *c)
+{
+    if (vrSupportFeature_Find(a, dir, fa, &c->sa) || vrSupportFeature_Find(b, vec3_neg(dir), fb, &c->sb)) return -1;
+    if (c->sa.kind == VR_FACE) {
+        c->n = vrPosed_FacePlane(a, c->sa.index, &c->ha);
+        c->dist = face_against(b, &c->sb.v, c->n, c->ha, &c->qa, &c->qb);
+        c->hb = c->ha + c->dist;
+    } else if (c->sb.kind == VR_FACE) {
+        double hf;
+        vec3 nb = vrPosed_FacePlane(b, c->sb.index, &hf);
+        c->dist = face_against(a, &c->sa.v, nb, hf, &c->qb, &c->qa);
+        c->n = vec3_neg(nb);
+        c->hb = -hf;
+        c->ha = c->hb - c->dist;
+    } else if (c->sa.kind != VR_EDGE || c->sb.kind != VR_EDGE || !edge_edge_normal(a, b, c)) {
+        point_features(a, b, c);
+    }
+    return 0;
+}
+
+/* ---- the walk's direction ----------------------------------------------------- */
+
+static double support_height(const vrPosed *b, vec3 u, int v)
+{
+    return vec3_dot(u, vrPosed_Vertex(b, vrPolyhedron_Climb(b->p, mat33_tmulv(&b->pose->R, u), v, NULL)));
+}
+
+double vrGap_Along(const vrGap *g, vec3 u)
+{
+    double low_b = g->b ? -support_height(g->b, vec3_neg(u), g->vb) : vec3_dot(u, g->c);
+    return low_b - support_height(g->a, u, g->va);
+}
+
+/* the normals (times sign) of the faces at feature f of x that separate
+ * better than *best does */
+static void try_faces(const vrGap *g, const vrPosed *x, vrFeature f, double sign, vec3 *best, double *bestgap)
+{
+    const vrPolyhedron *p = x->p;
+    int k, j, lo = f.type == VR_VERTEX ? p->vert_edge_start[f.index] : 0;
+    int hi = f.type == VR_VERTEX ? p->vert_edge_start[f.index + 1] : 1;
+    for (k = lo; k < hi; k++)
+        for (j = 0; j < 2; j++) {
+            int e = f.type == VR_VERTEX ? p->vert_edge[k] : f.index;
+            vec3 u = vec3_scale(vrPose_rotate(x->pose, p->face_normal[p->edge_f[e][j]]), sign);
+            double gu = vrGap_Along(g, u);
+            if (gu > *bestgap) *best = u, *bestgap = gu;
+        }
+}
+
+/* The cross product of edges ea of a and eb of b, when it separates
+ * better than *best does.  Crossing edges a hair apart: the direction
+ * between the closest points is off by 1e-16 m / gap (7e-9 rad at
+ * 1.4e-8 m), which tilts a 26 cm edge 2e-9 m, beyond SUPPORT_TOL, so the
+ * edge's lower end alone was taken as b's support and the distance came
+ * out 0.21 m for two touching boxes; the cross product is exact. */
+static void try_edges(const vrGap *g, int ea, int eb, vec3 *best, double *bestgap)
+{
+    const vrPolyhedron *pa = g->a->p, *pb = g->b->p;
+    vec3 da = vrPose_rotate(g->a->pose, vec3_sub(pa->vert[pa->edge_v[ea][1]], pa->vert[pa->edge_v[ea][0]]));
+    vec3 db = vrPose_rotate(g->b->pose, vec3_sub(pb->vert[pb->edge_v[eb][1]], pb->vert[pb->edge_v[eb][0]]));
+    vec3 u = vec3_cross(da, db);
+    double gu, gn;
+    if (vec3_len2(u) <= PARALLEL_SIN2 * vec3_len2(da) * vec3_len2(db)) return;
+    u = vec3_normalize(u);
+    gu = vrGap_Along(g, u);
+    gn = vrGap_Along(g, vec3_neg(u));
+    if (gn > gu) u = vec3_neg(u), gu = gn;
+    if (gu > *bestgap) *best = u, *bestgap = gu;
+}
+
+/* Direction of separation at the walk's final features fa, fb (fb unused
+ * for a point): a face normal when one is a face (exact however small the
+ * gap); else the direction between the closest points.  That direction
+ * carries rounding of order 1e-16 m / gap: below GAP_FUZZ the normals of
+ * the faces at the features compete with it, and the best separating one
+ * wins, so that a plate 1e-12 m above a table, walked to a pair of parallel
+ * edges, still finds the table's face. */
+#define GAP_FUZZ 1e-6
+vec3 vrGap_WalkDirection(const vrGap *g, vrFeature fa, vrFeature fb, vec3 ca, vec3 cb, double dw)
+{
+    vec3 best;
+    double bestgap;
+    if (fa.type == VR_FACE) return vrPose_rotate(g->a->pose, g->a->p->face_normal[fa.index]);
+    if (g->b && fb.type == VR_FACE) return vec3_neg(vrPose_rotate(g->b->pose, g->b->p->face_normal[fb.index]));
+    best = vec3_normalize(vec3_sub(cb, ca));
+    if (dw >= GAP_FUZZ * (1 + g->a->p->r_out + (g->b ? g->b->p->r_out : 0))) return best;
+    /* closest points that coincide (crossing edges 3e-17 m apart) give no
+     * direction at all: the features' own then win whatever their gap */
+    bestgap = vec3_len2(best) > 0 ? vrGap_Along(g, best) : -HUGE_VAL;
+    if (g->b && fa.type == VR_EDGE && fb.type == VR_EDGE) try_edges(g, fa.index, fb.index, &best, &bestgap);
+    if (fa.type == VR_VERTEX || fa.type == VR_EDGE) try_faces(g, g->a, fa, 1, &best, &bestgap);
+    if (g->b && (fb.type == VR_VERTEX || fb.type == VR_EDGE)) try_faces(g, g->b, fb, -1, &best, &bestgap);
+    if (vec3_len2(best) == 0) best = vrUnitOrUp(vec3_sub(g->b ? g->b->pose->p : g->c, g->a->pose->p));
+    return best;
+}

@@ -1,0 +1,72 @@
+/* canonical.h — the canonical support features, distance and normal of a
+ * posed pair of polyhedra (canonical.c).  Internal to the contact floor
+ * (contact.c, region.c, sphere.c) and its tests: what others use is
+ * contact.h. */
+#ifndef VROC_CANONICAL_H
+#define VROC_CANONICAL_H
+
+#include "feature.h"
+
+/* a small set of vertex indices, inline until it outgrows its buffer */
+typedef struct vrIntSet { int n, cap; int *v; int buf[32]; } vrIntSet;
+
+void vrIntSet_Init(vrIntSet *s);
+void vrIntSet_Free(vrIntSet *s);
+/* Adds the vertices of p with d.v >= floor (body frame) reachable from
+ * `seed` through such vertices: on a convex polytope all of them, when the
+ * set holds the top vertex.  -1 when out of memory. */
+int vrIntSet_Collect(const vrPolyhedron *p, vec3 d, int seed, double floor, vrIntSet *out);
+
+/* a polyhedron at a pose */
+typedef struct vrPosed { const vrPolyhedron *p; const vrPose *pose; } vrPosed;
+
+static inline vec3 vrPosed_Vertex(const vrPosed *b, int i) { return vrPose_apply(b->pose, b->p->vert[i]); }
+/* the world plane n.x = *h of face f; returns n */
+vec3 vrPosed_FacePlane(const vrPosed *b, int f, double *h);
+
+/* a support feature (Mirtich's features) and its vertices */
+typedef struct vrSupportFeature {
+    int kind, index;   /* VR_VERTEX / VR_EDGE / VR_FACE and its index */
+    vrIntSet v;        /* its vertices, ascending */
+} vrSupportFeature;
+
+/* The support feature of b along world dir, searched from the walk's
+ * feature `from` (s->v initialised by the caller); -1 when out of memory. */
+int vrSupportFeature_Find(const vrPosed *b, vec3 dir, vrFeature from, vrSupportFeature *s);
+/* end points of a vertex or edge support feature, world (a vertex twice) */
+void vrSupportFeature_Segment(const vrPosed *b, const vrSupportFeature *s, vec3 *p0, vec3 *p1);
+
+/* the canonical pair: features, normal, distance, closest points */
+typedef struct vrCanon {
+    vrSupportFeature sa, sb;
+    vec3 n;          /* world, from a toward b */
+    double dist;
+    vec3 qa, qb;     /* closest points (canonical choice on ties) */
+    double ha, hb;   /* support planes n.x = ha (of a) and n.x = hb (of b) */
+} vrCanon;
+
+void vrCanon_Init(vrCanon *c);
+void vrCanon_Free(vrCanon *c);
+/* The support features along dir (a) and -dir (b), searched from the walk's
+ * features fa, fb, then normal, distance and closest points from them;
+ * -1 when out of memory. */
+int vrCanon_Compute(const vrPosed *a, const vrPosed *b, vec3 dir, vrFeature fa, vrFeature fb, vrCanon *c);
+
+/* v normalised, or +z when it has no direction */
+static inline vec3 vrUnitOrUp(vec3 v)
+{
+    v = vec3_normalize(v);
+    return vec3_len2(v) > 0 ? v : vec3_make(0, 0, 1);
+}
+
+/* How far apart a (from vertex va) and b (from vb), or a and the point c
+ * when b is NULL, are along world direction u: the gap between their
+ * support planes, by climbing the vertex graphs. */
+typedef struct vrGap { const vrPosed *a, *b; vec3 c; int va, vb; } vrGap;
+
+double vrGap_Along(const vrGap *g, vec3 u);
+/* The direction of separation at the walk's final features fa, fb (fb
+ * unused for a point), its closest points ca, cb and distance dw. */
+vec3 vrGap_WalkDirection(const vrGap *g, vrFeature fa, vrFeature fb, vec3 ca, vec3 cb, double dw);
+
+#endif
