@@ -27,6 +27,7 @@ static void remember(vrOwner *o, int pi, double at)
     u->pair = pi;
     u->at = at;
     u->inside = o->pair[pi].inside;
+    u->near = o->pair[pi].near;
     u->t_check = o->pair[pi].t_check;
     u->key = o->pair[pi].key;
     u->quiet_until = o->pair[pi].quiet_until;
@@ -41,6 +42,7 @@ void vrOwner_Advance(vrOwner *o, double t)
         if (u->at <= t) continue;
         p->t_check = u->t_check;
         p->quiet_until = u->quiet_until;
+        p->near = u->near;
         vrPair_Settle(o, u->pair, u->inside, u->key);
     }
     o->nundo = 0;
@@ -91,7 +93,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     vrPair *p = &o->pair[pi];
     vrPose pa, pb;
     vrContact c;
-    int was_inside;
+    int was_inside, was_near;
     double wanted = earliest_found(o);   /* events found here so far: later ones are dropped */
     remember(o, pi, t);
     p->quiet_until = -INFINITY;
@@ -100,21 +102,26 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     p->t_check = t;
     if (c.dist > o->p.d) {
         was_inside = p->inside;
+        p->near = 0;
         if (was_inside || t == t_prev || !vrOwner_PutOffKey(o, pi, c.dist, c.n))
             vrPair_Settle(o, pi, 0, vrPair_Key(o, p, t, c.dist, c.n));
         return was_inside || t == t_prev ? vrPair_LostSupport(o, ev, t, p, &c) : 0;
     }
-    if (!p->inside && t > t_prev) {
-        double at = vrPair_Bisect(o, p, t_prev, t, &c, o->p.d, wanted);
+    /* an impact where the distance came down to the contact gap g_c (SPEC
+     * 7), from outside the envelope or from inside it */
+    if (!p->near && c.dist <= o->gc && t > t_prev) {
+        double at = vrPair_Bisect(o, p, t_prev, t, &c, o->gc, wanted);
         if (isnan(at) || vrPair_Impact(o, ev, p, at)) {
             vrPair_Settle(o, pi, p->inside, t);  /* due again at once: it is rolled back or re-evaluated */
             return !isnan(at);
         }
     }
-    was_inside = p->inside;
+    was_near = p->near;
+    p->near = c.dist <= o->gc;
     vrPair_Settle(o, pi, 1, t);
+    if (!p->near) return vrPair_LostSupport(o, ev, t, p, &c);   /* in the envelope, not touching */
     vrPair_ForEvents(o, p, t, &pa, &pb, &c);   /* the query above had the region: vrPair_EventQuery's */
-    if (was_inside && t > t_prev && c.dist < -VR_PENETRATION_TOL) {
+    if (was_near && t > t_prev && c.dist < -VR_PENETRATION_TOL) {
         double at = vrPair_Bisect(o, p, t_prev, t, &c, 0, wanted);
         if (isnan(at)) return 0;         /* after an event found here: rolled back */
         if (vrPair_Touch(o, ev, p, at)) return 1; /* due again at once, as after an impact */
@@ -189,12 +196,15 @@ static void collect_due(vrOwner *o, double t)
     }
 }
 
-/* may inside pair pi overlap at t (so that it may touch before t)?  The
- * walk decides: the canonical distance may lie up to 1e-6 m below it
- * (contact.h), so a walk within VR_QUICK_CLEAR of touching says maybe. */
-static int overlaps(vrOwner *o, int pi, double t)
+/* may inside pair pi have an event before t: a touching one that may
+ * overlap at t (so that it may touch before t), one in the envelope that
+ * may be within g_c at t (an impact before t)?  The walk decides: the
+ * canonical distance may lie up to 1e-6 m below it (contact.h), so a walk
+ * within VR_QUICK_CLEAR of the level says maybe. */
+static int may_cross(vrOwner *o, int pi, double t)
 {
-    return vrPair_Within(o, &o->pair[pi], t, VR_QUICK_CLEAR, t, t, NULL);
+    double level = o->pair[pi].near ? 0 : o->gc;
+    return vrPair_Within(o, &o->pair[pi], t, level + VR_QUICK_CLEAR, t, t, NULL);
 }
 
 int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *ev)
@@ -212,13 +222,14 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
         o->defer_keys = 1;
         for (i = 0; i < o->due.n; i++) evaluate_into_found(o, o->due.v[i], t, vrGrid_Point(g, k - 1), 1);
         o->defer_keys = 0;
-        /* A pair inside the envelope has its events at grid points only,
-         * unless it overlaps there (touch): after an event bisected to
-         * before t the others could only be rolled back (in a heap of
-         * bodies, most of the look-ahead's work), so only overlapping ones
-         * are looked at, as a worker without that event would */
+        /* A touching pair has its events at grid points only, unless it
+         * overlaps there (touch), and one in the envelope only where it
+         * comes within g_c: after an event bisected to before t the others
+         * could only be rolled back (in a heap of bodies, most of the
+         * look-ahead's work), so only those that may cross are looked at,
+         * as a worker without that event would */
         for (i = 0; i < o->due_inside.n; i++)
-            if (!impact_before(o, t) || overlaps(o, o->due_inside.v[i], t))
+            if (!impact_before(o, t) || may_cross(o, o->due_inside.v[i], t))
                 evaluate_into_found(o, o->due_inside.v[i], t, vrGrid_Point(g, k - 1), 1);
         later_keys(o, t);
         if (o->nfound) return take_first(o, t, ev);

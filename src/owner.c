@@ -129,7 +129,9 @@ void vrOwner_SetParams(vrOwner *o, const vrParams *p)
 {
     int i;
     o->p = *p;
-    o->v_rest = sqrt(2.0 * vec3_len(p->flight.accel) * p->d);
+    o->gc = vrParams_Gap(p);
+    o->region = vrParams_RegionLevel(p);
+    o->v_rest = sqrt(2.0 * vec3_len(p->flight.accel) * o->gc);
     vrBroad_SetEnvelope(&o->bp, p->d);    /* the boxes are padded by d: made anew */
     for (i = 0; i < o->npair; i++) {
         vrPair_Place(o, i);
@@ -219,6 +221,7 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
         vrPair_Query(o, p, t, 0, &pa, &pb, &c);
         inside = c.dist <= o->p.d;
         p->t_check = t;
+        o->pair[o->npair - 1].near = c.dist <= o->gc;
         vrPair_Settle(o, o->npair - 1, inside, inside ? t : vrPair_Key(o, &o->pair[o->npair - 1], t, c.dist, c.n));
     }
     return 0;

@@ -22,13 +22,25 @@
 
 #define VR_INSTANT_MAX 64      /* responses at one instant before moving on (SPEC 3.1) */
 #define VR_PENETRATION_TOL 1e-9
-#define VR_START_OVERLAP 1e-6  /* m: deeper overlaps refuse to start (SPEC 1.4) */
+#define VR_START_OVERLAP 1e-4  /* m: deeper overlaps refuse to start (SPEC 1.4, 7: a saved pile starts again) */
+#define VR_CONTACT_GAP 1e-3    /* m: impacts and rest act this far apart at most (SPEC 7) */
 
 typedef struct vrParams {
-    double d;            /* collision distance */
+    double d;            /* collision distance: the envelope the schedule keeps (thesis 3.2.3) */
     vrFlight flight;
     int use_heap;
 } vrParams;
+
+/* SPEC 7's contact gap g_c = min(d, 1 mm): where impacts and rest act,
+ * whatever the envelope d is, so that with the thesis's d = 0.25 nothing
+ * floats.  Inside the envelope the approach to g_c is found by bisection. */
+static inline double vrParams_Gap(const vrParams *p) { return p->d < VR_CONTACT_GAP ? p->d : VR_CONTACT_GAP; }
+/* the points of a contact region are those within twice that (at most d)
+ * of the other body's face: a body resting a little tilted keeps them all */
+static inline double vrParams_RegionLevel(const vrParams *p)
+{
+    return 2 * vrParams_Gap(p) < p->d ? 2 * vrParams_Gap(p) : p->d;
+}
 
 typedef struct vrOwnerStats {
     long long checks, heap_pops;

@@ -23,7 +23,8 @@
 typedef struct vrPair {
     int a, b;                 /* object ids, a < b */
     long long order;
-    int inside;               /* distance <= d at t_check */
+    int inside;               /* distance <= d at t_check: in the envelope */
+    int near;                 /* distance <= g_c at t_check: touching (vrParams_Gap) */
     int scheduled;            /* 0 when both bodies are frozen (static or resting) */
     int flagged;              /* to be evaluated at the next span start */
     double t_check;
@@ -41,7 +42,7 @@ enum { HOT_DORMANT = 1, HOT_INSIDE = 2, HOT_LISTED_A = 4, HOT_LISTED_B = 8 };
 typedef struct vrUndo {
     int pair;
     double at;                /* the evaluation time */
-    int inside;
+    int inside, near;
     double t_check;
     double key, quiet_until;
 } vrUndo;
@@ -61,7 +62,8 @@ typedef struct vrRegionMemo {
 
 struct vrOwner {
     vrParams p;
-    double v_rest;            /* sqrt(2 |a| d), SPEC 3.1 */
+    double gc, region;        /* vrParams_Gap, vrParams_RegionLevel */
+    double v_rest;            /* sqrt(2 |a| g_c), SPEC 3.1, 7 */
     vrBody **body;            /* by id, NULL when not held */
     vrIntList *body_pairs;    /* by id: indices of its pairs */
     vrIntList *body_partners; /* by id: the other body of each of those pairs */

@@ -248,7 +248,7 @@ int vrOwner_SupportCandidates(vrOwner *o, double t, const unsigned char *want, i
     int i, side, n = o->p.use_heap ? o->active.n : o->npair;
     for (i = 0; i < n; i++) {
         const vrPair *p = &o->pair[o->p.use_heap ? o->active.v[i] : i];
-        if (!p->inside || !p->scheduled) continue;
+        if (!p->near || !p->scheduled) continue;
         for (side = 0; side < 2; side++) {
             int x = side ? p->b : p->a;
             if (x < nwant && want[x] && candidate(o, p, side, t, out) != 0) return -1;

@@ -44,7 +44,7 @@ static vrRegionMemo *memo_slot(vrOwner *o, const vrPair *p)
 static int memo_holds(const vrOwner *o, const vrRegionMemo *m, const vrPair *p, const vrPose *pa, const vrPose *pb)
 {
     return m->order == p->order && m->shape_a == o->body[p->a]->shape.serial
-        && m->shape_b == o->body[p->b]->shape.serial && m->d == o->p.d && same_bits(&m->pa, &pa->p, sizeof m->pa)
+        && m->shape_b == o->body[p->b]->shape.serial && m->d == o->region && same_bits(&m->pa, &pa->p, sizeof m->pa)
         && same_bits(&m->qa, &pa->q, sizeof m->qa) && same_bits(&m->pb, &pb->p, sizeof m->pb)
         && same_bits(&m->qb, &pb->q, sizeof m->qb);
 }
@@ -66,8 +66,8 @@ void vrPair_Query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPos
         return;
     }
     o->checks++;
-    if (vrContact_Region(&A->shape, pa, &B->shape, pb, o->p.d, &p->cache, c) != 0) return;
-    m->order = p->order, m->d = o->p.d, m->pa = pa->p, m->qa = pa->q, m->pb = pb->p, m->qb = pb->q;
+    if (vrContact_Region(&A->shape, pa, &B->shape, pb, o->region, &p->cache, c) != 0) return;
+    m->order = p->order, m->d = o->region, m->pa = pa->p, m->qa = pa->q, m->pb = pb->p, m->qb = pb->q;
     m->shape_a = A->shape.serial, m->shape_b = B->shape.serial;
     copy_contact(&m->c, c);
 }

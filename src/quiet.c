@@ -104,20 +104,20 @@ static int quiet_support(vrOwner *o, const vrPair *p, double t, double until, co
     if (vrBody_Frozen(X) || X->nsupport != 1 || X->support[0].partner != Y->id || X->support[0].joint
         || c->npoints >= VR_REGION_MAX || (k = box_face_axis(Y, n)) < 0)
         return 0;
-    if (2 * vec3_get(Y->shape.half, k) <= o->p.d + QUIET_FACE_MARGIN) return 0;  /* its far face stays out of the slab */
+    if (2 * vec3_get(Y->shape.half, k) <= o->region + QUIET_FACE_MARGIN) return 0;  /* its far face stays out of the slab */
     vrBody_Velocity(X, t, &v);
     w = vrBody_Omega(X, px);
     drift = X->i_min > 0 ? vec3_len(vec3_cross(w, X->m.L)) / X->i_min * span * exp(X->m.spin * span) : 0;
     w_perp = vec3_len(vec3_madd(w, -vec3_dot(w, n), n)) + 4 * drift + 1e-12;
     U = fabs(vec3_dot(n, v)) + fabs(vec3_dot(n, X->m.a)) * span + w_perp * X->r_out;
     H = U * span + 1e-12;
-    if (!(U <= 0.5 * VR_V_EPS) || !(c->dist - H > VR_PENETRATION_TOL) || !(c->dist + H < o->p.d - 1e-9)) return 0;
+    if (!(U <= 0.5 * VR_V_EPS) || !(c->dist - H > VR_PENETRATION_TOL) || !(c->dist + H < o->gc - 1e-9)) return 0;
     if (!over_face(X, px, Y, k, t, until, QUIET_FACE_MARGIN)) return 0;
     if (vrBody_IsSphere(X)) return 1;   /* its region is the point below its centre */
     top = vec3_dot(n, Y->m.x0) + vec3_get(Y->shape.half, k);
     for (j = 0; j < X->shape.poly->nv; j++) {
         double gap = vec3_dot(n, vrPose_apply(px, X->shape.poly->vert[j])) - top;
-        if (fabs(gap - o->p.d) <= H + 1e-8) return 0;   /* it might enter or leave the region's slab */
+        if (fabs(gap - o->region) <= H + 1e-8) return 0;   /* it might enter or leave the region's slab */
     }
     q = vec3_madd(px->p, vec3_dot(vec3_sub(c->point[0], px->p), n), n);
     return vrRegion_Margin(c->point, c->npoints, n, q) > 2 * X->r_out * w_perp * span + 1e-8;
