@@ -41,7 +41,9 @@ typedef struct vrObjectDef {
     vrObjectType type;
     double linear_vel[3];     /* m/s, (0,0,0) */
     double angular_vel[3];    /* rad/s, world frame, (0,0,0) */
-    double elasticity;        /* coefficient of restitution 0..1, 1.0 */
+    double elasticity;        /* coefficient of restitution 0..1, settings.default_elasticity (1.0) */
+    double friction;          /* Coulomb coefficient 0..10, settings.default_friction (0); a pair
+                                 uses sqrt(mu1 mu2) (SPEC 7) */
     double mass;              /* kg, != 0; < 0: static. Used when mass_set. */
     int mass_set;             /* an explicit mass wins over volume */
     double volume;            /* > 0, 1.0; the mass when mass_set == 0 */
@@ -81,6 +83,9 @@ typedef struct vrSettings {
     char lcm_url[256];        /* udpm://239.255.76.67:7667?ttl=0 */
     char collision_sound[256];/* kept for the sound server (not played yet) */
     double collision_vol;     /* 0..1, 1.0 */
+    double default_friction;  /* 0..10, 0: the friction objects created after it start with */
+    double default_elasticity;/* 0..1, 1: the elasticity objects created after it start with */
+    double contact_step;      /* > 0 .. 0.1 s, 1/240: the longest step between island steps (SPEC 7) */
 } vrSettings;
 
 vrSettings vrSettings_Default(void);
@@ -147,6 +152,8 @@ typedef struct vrStats {
     long long checks, heap_pops, collisions, klu_solves, klu_refactors, klu_factors;
     double energy;
     double frame_ms, sim_ms, render_ms;
+    long long island_steps;       /* island steps that solved an island (SPEC 7) */
+    long long island_contacts;    /* the contacts those steps solved */
     /* with workers */
     int gps;
     long long messages;

@@ -37,7 +37,8 @@ const Command sh_commands[] = {
 
     ATTR("linear_vel", "linear_vel = (x,y,z)", "initial linear velocity, m/s", "(0,0,0)", K_VEC3, R_ANY, 0, 0, linear_vel, TY_ALL),
     ATTR("angular_vel", "angular_vel = (x,y,z)", "initial angular velocity, rad/s, world frame", "(0,0,0)", K_VEC3, R_ANY, 0, 0, angular_vel, TY_ALL),
-    ATTR("elasticity", "elasticity = e", "coefficient of restitution (1: no energy lost)", "1", K_NUM, R_CLOSED, 0, 1, elasticity, TY_ALL),
+    ATTR("elasticity", "elasticity = e", "coefficient of restitution (1: no energy lost)", "default_elasticity", K_NUM, R_CLOSED, 0, 1, elasticity, TY_ALL),
+    ATTR("friction", "friction = mu", "Coulomb friction coefficient (a pair: sqrt(mu1 mu2))", "default_friction", K_NUM, R_CLOSED, 0, 10, friction, TY_ALL),
     ATTR("mass", "mass = m", "mass, kg; negative: static, never moves", "the volume", K_NUM, R_NONZERO, 0, 0, mass, TY_ALL),
     ATTR("volume", "volume = v", "nominal volume, m^3: the mass when mass is not given", "1", K_NUM, R_GT, 0, 1e12, volume, TY_ALL),
     ATTR("translate", "translate = (x,y,z)", "initial position of the modelling frame, m (replaces)", "(0,0,0)", K_VEC3, R_ANY, 0, 0, translate, TY_ALL),
@@ -75,6 +76,9 @@ const Command sh_commands[] = {
     VERB("gravity", "gravity", "the same as force = (0,0,-1) 9.8", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_gravity),
     TEXT_SETTING("collision_sound", "collision_sound = s", "sound for collisions (the rest of the line; kept, not played)", "(none)", G_SYSTEM, K_TEXT, 1, 255, collision_sound),
     SETTING("collision_vol", "collision_vol = v", "volume of the collision sound", "1", G_SYSTEM, K_NUM, R_CLOSED, 0, 1, collision_vol),
+    SETTING("default_friction", "default_friction = mu", "friction of the objects created after it", "0", G_SYSTEM, K_NUM, R_CLOSED, 0, 10, default_friction),
+    SETTING("default_elasticity", "default_elasticity = e", "elasticity of the objects created after it", "1", G_SYSTEM, K_NUM, R_CLOSED, 0, 1, default_elasticity),
+    SETTING("contact_step", "contact_step = s", "longest step between island steps, s (contacts solved together)", "0.0041667", G_EXT, K_NUM, R_CLOSED, 1e-5, 0.1, contact_step),
 
     VERB("dump", "dump", "print every object's state (one CSV line each, by name)", G_EXT, F_BARE, R_ANY, 0, 0, run_dump),
     VERB("stats", "stats", "print the statistics (one line of key=value)", G_EXT, F_BARE, R_ANY, 0, 0, run_stats),

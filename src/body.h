@@ -12,20 +12,12 @@
 
 #include "contact.h"
 
-#define VR_MAX_SUPPORTS 8
-
-/* a body resting on (or sliding over) a partner: n points from the partner
- * toward the body.  joint: the support began with others together (the
- * centre of mass over their regions together, not over this one alone).
- * fixed: the partner is static (never moves), so the body's own velocity
- * along n is the relative one */
-typedef struct vrSupport { int partner; vec3 n; int joint; int fixed; } vrSupport;
-
 /* the anchor of free flight (thesis 3.2.3, SPEC 3.2) */
 typedef struct vrMotion {
     double t0;
     vec3 x0, v0;   /* centre of mass position and velocity at t0 */
-    vec3 a;        /* acceleration: the global force, less supported components */
+    vec3 a;        /* acceleration: the global force; none in an island's contact
+                      step, whose gravity is in the velocity already (SPEC 7) */
     quat q0;       /* orientation at t0, body to world */
     vec3 L;        /* angular momentum, world frame, constant in free flight */
     double tcap;   /* time after t0 when |v| reaches max_linear (INFINITY: never) */
@@ -66,14 +58,17 @@ typedef struct vrBody {
     double i_min;                   /* smallest principal moment */
     double r_in, r_out;             /* about the centre (thesis 3.3.1.1) */
     double elasticity;
+    double friction;                /* Coulomb coefficient; a pair uses sqrt(mu1 mu2) (SPEC 7) */
     vrShape shape;
 
     vrMotion m;
     vrRotKind rot;
     vrRotCache rc;
     int resting;                    /* SPEC 3.5 rest state */
-    int nsupport;
-    vrSupport support[VR_MAX_SUPPORTS];
+    int contact;                    /* in an island's contact step until the next island
+                                       step: flies without the global force (island.h) */
+    int island;                     /* its island at the last island step or rest (the
+                                       island's lowest body id), -1 none */
     int hit;                        /* an impulse hit it in the current frame */
     /* the last pose asked for: a body in several pairs is asked again and
      * again at the same grid point (the same bits either way) */
@@ -93,12 +88,12 @@ typedef struct vrFlight {
 void vrBody_SetMassProperties(vrBody *b, double mass, const mat33 *inertia_unit, double r_in, double r_out);
 /* (re)anchors b at time t with the given state; clamps |v| and |omega|
  * (SPEC 3.2: at the start and at every event), recomputes the acceleration
- * from the supports and the cap time */
+ * (none in a contact step) and the cap time */
 void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vrFlight *f);
 /* sets the anchor exactly as given (one captured with vrBody_CaptureAnchor):
  * no clamping, no normalising; what derives from it is recomputed */
 void vrBody_Restore(vrBody *b, double t0, vec3 x0, vec3 v0, quat q0, vec3 L, const vrFlight *f);
-/* re-anchor at t keeping the motion (after a change of settings or supports) */
+/* re-anchor at t keeping the motion (after a change of settings) */
 void vrBody_Reanchor(vrBody *b, double t, const vrFlight *f);
 void vrBody_Pose(vrBody *b, double t, vrPose *pose);
 /* the pose a distance or a region needs: a sphere collides as a true

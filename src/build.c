@@ -29,7 +29,7 @@ int vrObjectDef_ShapeChanged(const vrObjectDef *a, const vrObjectDef *b)
 
 int vrObjectDef_MassChanged(const vrObjectDef *a, const vrObjectDef *b)
 {
-    return vrObjectDef_Mass(a) != vrObjectDef_Mass(b) || a->elasticity != b->elasticity;
+    return vrObjectDef_Mass(a) != vrObjectDef_Mass(b) || a->elasticity != b->elasticity || a->friction != b->friction;
 }
 
 static int copy_draw_mesh(vrObject *o)
@@ -103,6 +103,7 @@ int vrObject_Build(vrObject *o, char *err, size_t n)
     sh->serial = ++shapes_made;
     vrBody_SetMassProperties(&o->body, vrObjectDef_Mass(d), &unit, rin, rout);
     o->body.elasticity = d->elasticity;
+    o->body.friction = d->friction;
     o->built = 1;
     return 0;
 }
@@ -124,7 +125,8 @@ void vrObject_Place(vrObject *o, double t, const vrFlight *f)
 {
     quat q = vrObjectDef_Orientation(&o->def);
     o->body.resting = 0;
-    o->body.nsupport = 0;
+    o->body.contact = 0;
+    o->body.island = -1;
     o->body.hit = 0;
     vrBody_Anchor(&o->body, t, vrVec3_Of(o->def.translate), vrVec3_Of(o->def.linear_vel), q,
                   vrBody_MomentumAt(&o->body, q, vrVec3_Of(o->def.angular_vel)), f);

@@ -6,10 +6,10 @@
 #include "owner_state.h"
 
 /* heap = 0 is the thesis's ablation: every pair looked at fully, every
- * step; an inside or support pair always is (its events need the contact) */
+ * step; a pair in the envelope always is (its events need the contact) */
 static int cheap_look_allowed(const vrOwner *o, const vrPair *p)
 {
-    return o->p.use_heap && !p->inside && !vrOwner_SupportedPair(o, p->a, p->b);
+    return o->p.use_heap && !p->inside;
 }
 
 /* the walk's distance when it is clear of the envelope: outside, no event,

@@ -39,6 +39,8 @@ vrSettings vrSettings_Default(void)
     s.distribution = VR_DIST_ROUND_ROBIN;
     strcpy(s.lcm_url, "udpm://239.255.76.67:7667?ttl=0");
     s.collision_vol = 1.0;
+    s.default_elasticity = 1.0;
+    s.contact_step = 1.0 / 240;
     return s;
 }
 
@@ -67,6 +69,10 @@ int vrSettings_Check(const vrSettings *s, char *err, size_t n)
     if (bad_range(s->room, 0, 1e6, 0)) return out_of_range(err, n, "room", ">= 0", s->room);
     if (s->gps < 0 || s->gps > VR_MAX_GPS) return vrGeom_Fail(err, n, "%s must be 0..%d (got %g)", "gps", VR_MAX_GPS, (double)s->gps);
     if (bad_range(s->collision_vol, 0, 1, 0)) return out_of_range(err, n, "collision_vol", "0..1", s->collision_vol);
+    if (bad_range(s->default_friction, 0, 10, 0)) return out_of_range(err, n, "default_friction", "0..10", s->default_friction);
+    if (bad_range(s->default_elasticity, 0, 1, 0))
+        return out_of_range(err, n, "default_elasticity", "0..1", s->default_elasticity);
+    if (bad_range(s->contact_step, 1e-5, 0.1, 0)) return out_of_range(err, n, "contact_step", "1e-5..0.1", s->contact_step);
     return 0;
 }
 
@@ -81,6 +87,7 @@ int vrObjectDef_Check(const vrObjectDef *d, char *err, size_t n)
         if (bad_range(d->size[i], 0, 1e9, 1)) return out_of_range(err, n, "size", "> 0", d->size[i]);
     }
     if (bad_range(d->elasticity, 0, 1, 0)) return out_of_range(err, n, "elasticity", "0..1", d->elasticity);
+    if (bad_range(d->friction, 0, 10, 0)) return out_of_range(err, n, "friction", "0..10", d->friction);
     if (!isfinite(d->mass) || d->mass == 0) return out_of_range(err, n, "mass", "non-zero", d->mass);
     if (bad_range(d->volume, 0, 1e12, 1)) return out_of_range(err, n, "volume", "> 0", d->volume);
     if (d->rotate_set && (!isfinite(d->rotate_angle) || !vec3_isfinite(axis) || vec3_len2(axis) == 0))

@@ -50,8 +50,10 @@ static void set_result(vrContact *out, double dist, vec3 n, vec3 pa, vec3 pb)
  * face's for a vertex, an edge or a face on a face, and the canonical
  * features along it give normal, distance and region, as they do for
  * shapes a hair apart.  Crossed edges touching (no face separates) stay
- * libccd's. */
-#define SHALLOW_TOL 1e-9
+ * libccd's.  Bodies resting on each other may sink this far into each
+ * other (SPEC 7: islands prevent overlap, they do not push out what is
+ * left), and keep their whole contact region meanwhile. */
+#define SHALLOW_TOL VR_SHALLOW_OVERLAP
 
 /* the shapes overlap deeper than SHALLOW_TOL, by libccd */
 static int deep_overlap(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb)
@@ -117,6 +119,7 @@ static int penetration_contact(const vrShape *a, const vrPose *pa, const vrShape
     if (d >= 0) {
         out->npoints = 1;
         out->point[0] = pos;
+        out->gap[0] = out->dist;
     }
     return 0;
 }
@@ -157,7 +160,7 @@ static int poly_finish(const vrShape *a, const vrPose *pa, const vrShape *b, con
         return penetration_contact(a, pa, b, pb, d, &g, ca, cb, out);
     }
     set_result(out, c.dist, c.n, c.qa, c.qb);
-    if (d >= 0 && c.dist <= d) rc = vrRegion_Points(&ba, &bb, &c, d, out->point, &out->npoints);
+    if (d >= 0 && c.dist <= d) rc = vrRegion_Points(&ba, &bb, &c, d, out->point, out->gap, &out->npoints);
     vrCanon_Free(&c);
     return rc;
 }
@@ -203,6 +206,7 @@ static int sphere_contact(const vrShape *a, const vrPose *pa, const vrShape *b, 
     if (d >= 0 && dist <= d) {
         out->npoints = 1;
         out->point[0] = at;
+        out->gap[0] = dist;
     }
     return rc;
 }

@@ -41,6 +41,7 @@ typedef struct vrContact {
                         or for a sphere midway between the deepest points). */
     int npoints;     /* contact region points (only filled by vrContact_Region) */
     vec3 point[VR_REGION_MAX];
+    double gap[VR_REGION_MAX];  /* each point's gap along n between the two surfaces (>= dist) */
     int walk_steps;  /* feature changes the walk made in this query (0 for closed forms) */
 } vrContact;
 
@@ -81,6 +82,12 @@ int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const 
  * (VR_QUICK_CLEAR below); vrContact_Within may then answer by the walk
  * where the canonical distance would not, the same with the heap and
  * without, so runs keep their bits. */
+/* Shapes into each other no deeper than this (m) are taken as touching
+ * along the face normal they overlap least along, with their whole
+ * contact region, not libccd's one point (contact.c): bodies resting on
+ * each other may sink this far (SPEC 7). */
+#define VR_SHALLOW_OVERLAP 1e-4
+
 #define VR_QUICK_TOL 1e-11
 
 /* How far below the walk's distance the canonical one can be.  For a

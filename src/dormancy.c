@@ -18,11 +18,12 @@ static int event_involves(const vrEvent *ev, const int *ids, int n)
 }
 
 /* pair pi of bodies x and y cannot come within d before the frame ends:
- * it can be dormant (with heap = 1; never while inside or supporting) */
+ * it can be dormant (with heap = 1; never while in the envelope) */
 static int apart_from(vrOwner *o, int pi, const vrBox *box_x, int x, int y)
 {
+    (void)x;
     if (!o->p.use_heap || (o->hot[pi] & HOT_INSIDE)) return 0;
-    return vrBroad_Apart(box_x, vrBroad_Box(&o->bp, o->body, y)) && !vrOwner_SupportedPair(o, x, y);
+    return vrBroad_Apart(box_x, vrBroad_Box(&o->bp, o->body, y));
 }
 
 static int apart(vrOwner *o, int pi, int x, int y) { return apart_from(o, pi, vrBroad_Box(&o->bp, o->body, x), x, y); }
@@ -73,7 +74,7 @@ void vrOwner_NewFrame(vrOwner *o, const vrGrid *g)
     int i;
     for (i = 0; i < o->bodycap; i++)
         if (o->body[i]) o->body[i]->hit = 0;
-    if (!o->bp.map.cap || vrBroad_NewFrame(&o->bp, o->body, o->bodycap, g->t0, g->T, wake_met, wake_boxless, o) != 0)
+    if (!o->bp.map.cap || vrBroad_NewFrame(&o->bp, o->body, o->bodycap, g->t0, g->frame_T, wake_met, wake_boxless, o) != 0)
         for (i = 0; i < o->npair; i++) wake(o, i);
 }
 

@@ -11,6 +11,7 @@
 #include "build.h"
 #include "config.h"
 #include "owners.h"
+#include "rest.h"
 #include "start.h"
 
 static int motion_edited(const vrObjectDef *a, const vrObjectDef *b)
@@ -22,45 +23,9 @@ static int motion_edited(const vrObjectDef *a, const vrObjectDef *b)
         || memcmp(a->rotate_axis, b->rotate_axis, sizeof a->rotate_axis) != 0;
 }
 
-/* Adds to w->update the state of every live body that id supports, and
- * lets fn change it (j: the support on id).  The update's records move
- * as it grows: take none before. */
-static int update_supported_by(vrWorld *w, int id, void (*fn)(const vrWorld *w, vrBodyState *st, int j))
-{
-    int i, j;
-    for (i = 0; i < w->table.n; i++) {
-        vrObject *x = w->table.obj[i];
-        vrBodyState *st;
-        if (!x || i == id || !x->live) continue;
-        for (j = 0; j < x->body.nsupport && x->body.support[j].partner != id; j++)
-            ;
-        if (j == x->body.nsupport) continue;
-        st = vrUpdate_Body(&w->update, &x->body, w->t);
-        if (!st) return -1;
-        for (j = 0; j < st->nsupport && st->support[j].partner != id; j++)
-            ;
-        if (j < st->nsupport) fn(w, st, j);
-    }
-    return 0;
-}
-
-static void drop_support(const vrWorld *w, vrBodyState *st, int j)
-{
-    int partner = st->support[j].partner, k;
-    (void)w;
-    for (j = k = 0; j < st->nsupport; j++)
-        if (st->support[j].partner != partner) st->support[k++] = st->support[j];
-    st->nsupport = k;
-    st->resting = 0;
-}
-
-/* a partner made static (or dynamic) by an edit: the support's `fixed`
- * (hold_to_supports in effect.c) follows, and a body resting on it wakes */
-static void refix_support(const vrWorld *w, vrBodyState *st, int j)
-{
-    st->support[j].fixed = w->table.obj[st->support[j].partner]->body.is_static;
-    st->resting = 0;
-}
+/* the islands an edit of o wakes: its own, or every one for a static
+ * body (which islands lie on it is not kept) */
+static int woken_by(const vrObject *o) { return o->body.is_static ? VR_EVERY_ISLAND : o->body.island; }
 
 /* a definition edited while the simulation runs acts on the live body at
  * the world's time (the start of the next frame): a new shape or mass keeps
@@ -74,7 +39,8 @@ static int apply_live_edit(vrWorld *w, vrObject *o, const vrObjectDef *old, char
     int was_static = o->body.is_static;
     if (o->built && !motion_edited(old, &o->def)) {
         o->body.elasticity = o->def.elasticity;
-        w->structure++;                  /* workers rebuild it with the new elasticity */
+        o->body.friction = o->def.friction;
+        w->structure++;                  /* workers rebuild it with the new elasticity and friction */
         return 0;
     }
     if (!o->built) w->structure++;
@@ -93,12 +59,13 @@ static int apply_live_edit(vrWorld *w, vrObject *o, const vrObjectDef *old, char
     if (memcmp(old->angular_vel, o->def.angular_vel, sizeof old->angular_vel) != 0) omega = vrVec3_Of(o->def.angular_vel);
     st->L = vrBody_MomentumAt(&o->body, st->q, omega);
     st->resting = 0;
-    st->nsupport = 0;
+    st->contact = 0;
+    st->island = -1;
+    if (vrRest_WakeIsland(w, was_static ? VR_EVERY_ISLAND : woken_by(o), &w->update, w->t) != 0) return vrGeom_Fail(err, n, "out of memory");
     if (was_static != o->body.is_static) {
         if (w->owner) vrOwner_DropBody(w->owner, o->body.id);
         o->live = 0;
         if (vrWorld_MakeLive(w, err, n) != 0) return -1;
-        if (update_supported_by(w, o->body.id, refix_support) != 0) return vrGeom_Fail(err, n, "out of memory");
     }
     return vrWorld_ApplyUpdate(w, &w->update) == 0 ? 0 : vrGeom_Fail(err, n, "out of memory");
 }
@@ -127,9 +94,9 @@ int vrWorld_DeleteObject(vrWorld *w, vrObjectId id)
     vrObject *o = vrWorld_Object(w, id);
     if (!o) return -1;
     if (o->live) {
-        /* what rests on or slides over it loses that support */
+        /* the island it rested in wakes */
         w->update.n = 0;
-        if (update_supported_by(w, id, drop_support) != 0) return -1;
+        if (vrRest_WakeIsland(w, woken_by(o), &w->update, w->t) != 0) return -1;
         if (w->owner) vrOwner_DropBody(w->owner, id);
         w->table.obj[id] = NULL;
         drop_pending(w, id);

@@ -9,11 +9,9 @@
 #define VR_PUSHOUT_GAP 1e-6    /* m: a push-out leaves this gap (MPR is good to 1e-9) */
 
 /* Adds to up the states of the bodies (by id in body) that ev changes:
- * velocities after an impulse (ev->e, at ev->c along ev->n, spin clamped
- * at flight->max_angular), positions after a push-out, supports begun or
- * ended; then removes what is left of each body's speed along a static
- * support's normal when slower than VR_V_EPS.  -1 when the impulse solve
- * fails or memory runs out. */
+ * velocities after an impulse (ev->e and ev->mu, at ev->c along ev->n, spin
+ * clamped at flight->max_angular), positions after a push-out.  -1 when the
+ * impulse solve fails or memory runs out. */
 int vrEffect_Compute(vrBody **body, vrResponder *responder, const vrFlight *flight, const vrEvent *ev, vrUpdate *up);
 
 #endif

@@ -20,7 +20,6 @@ void vrUpdate_Free(vrUpdate *u)
 void vrBody_Capture(vrBody *b, double t, vrBodyState *st)
 {
     vrPose p;
-    int i;
     vrBody_Pose(b, t, &p);
     st->id = b->id;
     st->t = t;
@@ -31,13 +30,12 @@ void vrBody_Capture(vrBody *b, double t, vrBodyState *st)
     st->raw = 0;
     st->resting = b->resting;
     st->hit = b->hit;
-    st->nsupport = b->nsupport;
-    for (i = 0; i < b->nsupport; i++) st->support[i] = b->support[i];
+    st->contact = b->contact;
+    st->island = b->island;
 }
 
 void vrBody_CaptureAnchor(const vrBody *b, vrBodyState *st)
 {
-    int i;
     st->id = b->id;
     st->t = b->m.t0;
     st->x = b->m.x0;
@@ -47,8 +45,8 @@ void vrBody_CaptureAnchor(const vrBody *b, vrBodyState *st)
     st->raw = 1;
     st->resting = b->resting;
     st->hit = b->hit;
-    st->nsupport = b->nsupport;
-    for (i = 0; i < b->nsupport; i++) st->support[i] = b->support[i];
+    st->contact = b->contact;
+    st->island = b->island;
 }
 
 vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t)
@@ -71,24 +69,23 @@ int vrUpdate_Bodies(vrUpdate *u, vrBody *x, vrBody *y, double t, vrBodyState **s
 
 void vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f)
 {
-    int i;
     b->resting = st->resting;
     b->hit = st->hit;
-    b->nsupport = st->nsupport;
-    for (i = 0; i < st->nsupport; i++) b->support[i] = st->support[i];
+    b->contact = st->contact;
+    b->island = st->island;
     if (st->raw) vrBody_Restore(b, st->t, st->x, st->v, st->q, st->L, f);
     else vrBody_Anchor(b, st->t, st->x, st->v, st->q, st->L, f);
 }
 
-vrCandidate *vrCandidates_Add(vrCandidates *l)
+vrTouch *vrTouches_Add(vrTouches *l)
 {
-    if (vrGrow((void **)&l->c, &l->cap, l->n + 1, sizeof *l->c) != 0) return NULL;
-    return &l->c[l->n++];
+    if (vrGrow((void **)&l->t, &l->cap, l->n + 1, sizeof *l->t) != 0) return NULL;
+    return &l->t[l->n++];
 }
 
-void vrCandidates_Free(vrCandidates *l)
+void vrTouches_Free(vrTouches *l)
 {
-    free(l->c);
-    l->c = NULL;
+    free(l->t);
+    l->t = NULL;
     l->n = l->cap = 0;
 }

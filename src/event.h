@@ -7,11 +7,9 @@
 
 typedef enum vrEventKind {
     VR_EV_NONE,
-    VR_EV_IMPACT,        /* distance came down to d while approaching */
-    VR_EV_CONTACT,       /* inside the envelope, approaching faster than v_eps */
-    VR_EV_PUSHOUT,       /* interpenetrating: pushed apart along the normal */
-    VR_EV_SUPPORT_END,
-    VR_EV_SUPPORT_BEGIN
+    VR_EV_IMPACT,        /* distance came down to g_c while approaching */
+    VR_EV_CONTACT,       /* within g_c, approaching faster than v_eps */
+    VR_EV_PUSHOUT        /* interpenetrating: pushed apart along the normal */
 } vrEventKind;
 
 typedef struct vrEvent {
@@ -23,10 +21,8 @@ typedef struct vrEvent {
     vec3 c;              /* where the impulse acts (centroid of the most approaching points) */
     double approach;     /* n.u at c, < 0 when approaching */
     double e;            /* restitution to use */
+    double mu;           /* friction to use: sqrt(mu_a mu_b) (SPEC 7) */
     double depth;        /* push-out */
-    int body, partner;   /* support events: body is (no longer) supported by partner */
-    vec3 corner[3];      /* support begins: corners spanning the contact region (pair_events.c) */
-    int ncorner;
 } vrEvent;
 
 /* (time, pair order): the order events are taken in */
@@ -46,26 +42,28 @@ typedef struct vrBodyState {
     quat q;
     int raw;
     int resting, hit;
-    int nsupport;
-    vrSupport support[VR_MAX_SUPPORTS];
+    int contact, island;     /* vrBody's */
 } vrBodyState;
 
 typedef struct vrUpdate { int n, cap; vrBodyState *body; } vrUpdate;
 
-/* A contact that could help carry a body that no single contact carries
- * (a plank across two tables): reported at a frame end (SPEC 3.1). */
-typedef struct vrCandidate {
-    int body, partner;
-    vec3 n;                    /* from the partner toward the body */
-    vec3 partner_velocity;     /* of the partner's material point at the region's centre */
+/* A pair touching at an island step (SPEC 7): within twice the contact
+ * gap, with at most VR_TOUCH_POINTS points of its region and their gaps.
+ * Reported by the owners at each island step (island_step.c). */
+#define VR_TOUCH_POINTS 8
+typedef struct vrTouch {
+    int a, b;                  /* a < b */
+    vec3 n;                    /* from a toward b */
+    double dist;
     int npoints;
-    vec3 point[VR_REGION_MAX];
-} vrCandidate;
+    vec3 point[VR_TOUCH_POINTS];
+    double gap[VR_TOUCH_POINTS];
+} vrTouch;
 
-typedef struct vrCandidates { int n, cap; vrCandidate *c; } vrCandidates;
+typedef struct vrTouches { int n, cap; vrTouch *t; } vrTouches;
 
-vrCandidate *vrCandidates_Add(vrCandidates *l);
-void vrCandidates_Free(vrCandidates *l);
+vrTouch *vrTouches_Add(vrTouches *l);
+void vrTouches_Free(vrTouches *l);
 
 void vrUpdate_Init(vrUpdate *u);
 void vrUpdate_Free(vrUpdate *u);

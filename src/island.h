@@ -6,13 +6,13 @@
  * gets one answer.  The law, at every contact point: the normal impulse is
  * >= 0 and the relative normal velocity after it is at least the point's
  * floor (0 for a touching point; a negative floor lets a point with a gap
- * close it, speculatively), one or the other binding (complementarity);
+ * close it, speculatively; a positive one is a bounce, Newton's e times
+ * the speed it came in at), one or the other binding (complementarity);
  * friction acts on the contact as a whole (a patch): the tangential
  * impulse at the points' centroid stops the sliding while it can, and is
  * at most mu times the points' normal impulses together in every direction
  * otherwise (Coulomb's round cone), against the slip; a twist about the
- * normal likewise within that times the patch's mean radius.  Restitution is 0: impacts that bounce are events
- * of their own (SPEC 3.1), answered pair by pair.
+ * normal likewise within that times the patch's mean radius.
  *
  * Solved by projected Gauss-Seidel in a fixed order (contacts as given,
  * points in order), so the same island gives the same bits in every
@@ -44,7 +44,7 @@ typedef struct vrIslandContact {
     double mu;                /* Coulomb coefficient, >= 0 */
     int npoints;              /* 1..VR_ISLAND_POINTS */
     vec3 p[VR_ISLAND_POINTS];           /* world points */
-    double floor[VR_ISLAND_POINTS];     /* lowest relative normal velocity allowed, <= 0 */
+    double floor[VR_ISLAND_POINTS];     /* lowest relative normal velocity allowed */
     double lambda[VR_ISLAND_POINTS];    /* out: normal impulses on b (on a: minus) */
     vec3 friction;            /* out: tangential impulse on b at the points' centroid */
     double twist;             /* out: angular impulse on b about n (friction against turning) */
@@ -54,6 +54,7 @@ typedef struct vrIslandStats {
     int sweeps;               /* Gauss-Seidel sweeps made */
     int shock;                /* 1 when the ground-up pass ran */
     int frictionless;         /* 1 when friction had to go to keep the energy (see island.c) */
+    int bounceless;           /* 1 when the bounces had to go too */
     double residual;          /* largest normal velocity below a floor left, m/s */
 } vrIslandStats;
 

@@ -28,6 +28,7 @@ static void remember(vrOwner *o, int pi, double at)
     u->at = at;
     u->inside = o->pair[pi].inside;
     u->near = o->pair[pi].near;
+    u->overlap = o->pair[pi].overlap;
     u->t_check = o->pair[pi].t_check;
     u->key = o->pair[pi].key;
     u->quiet_until = o->pair[pi].quiet_until;
@@ -43,6 +44,7 @@ void vrOwner_Advance(vrOwner *o, double t)
         p->t_check = u->t_check;
         p->quiet_until = u->quiet_until;
         p->near = u->near;
+        p->overlap = u->overlap;
         vrPair_Settle(o, u->pair, u->inside, u->key);
     }
     o->nundo = 0;
@@ -93,7 +95,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     vrPair *p = &o->pair[pi];
     vrPose pa, pb;
     vrContact c;
-    int was_inside, was_near;
+    int was_inside, was_near, was_overlap;
     double wanted = earliest_found(o);   /* events found here so far: later ones are dropped */
     remember(o, pi, t);
     p->quiet_until = -INFINITY;
@@ -102,13 +104,15 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     p->t_check = t;
     if (c.dist > o->p.d) {
         was_inside = p->inside;
-        p->near = 0;
+        p->near = p->overlap = 0;
         if (was_inside || t == t_prev || !vrOwner_PutOffKey(o, pi, c.dist, c.n))
             vrPair_Settle(o, pi, 0, vrPair_Key(o, p, t, c.dist, c.n));
-        return was_inside || t == t_prev ? vrPair_LostSupport(o, ev, t, p, &c) : 0;
+        return 0;
     }
     /* an impact where the distance came down to the contact gap g_c (SPEC
-     * 7), from outside the envelope or from inside it */
+     * 7), from outside the envelope or from inside it (a pair of an island
+     * comes to g_c as its step allows, and the impact there answers a point
+     * that still comes in, pair_events.c) */
     if (!p->near && c.dist <= o->gc && t > t_prev) {
         double at = vrPair_Bisect(o, p, t_prev, t, &c, o->gc, wanted);
         if (isnan(at) || vrPair_Impact(o, ev, p, at)) {
@@ -117,11 +121,13 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
         }
     }
     was_near = p->near;
-    p->near = c.dist <= o->gc;
+    was_overlap = p->overlap;
+    p->near = vrPair_Near(o, c.dist);
+    p->overlap = c.dist < -VR_PENETRATION_TOL;
     vrPair_Settle(o, pi, 1, t);
-    if (!p->near) return vrPair_LostSupport(o, ev, t, p, &c);   /* in the envelope, not touching */
+    if (!p->near) return 0;              /* in the envelope, not touching */
     vrPair_ForEvents(o, p, t, &pa, &pb, &c);   /* the query above had the region: vrPair_EventQuery's */
-    if (was_near && t > t_prev && c.dist < -VR_PENETRATION_TOL) {
+    if (was_near && !was_overlap && t > t_prev && p->overlap) {
         double at = vrPair_Bisect(o, p, t_prev, t, &c, 0, wanted);
         if (isnan(at)) return 0;         /* after an event found here: rolled back */
         if (vrPair_Touch(o, ev, p, at)) return 1; /* due again at once, as after an impact */
@@ -212,8 +218,9 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     long k = 1;
     int i;
     o->nfound = 0;
-    if (!(g->T == o->bp.T)) vrOwner_NewFrame(o, g);
+    if (!(g->frame_T == o->bp.T)) vrOwner_NewFrame(o, g);
     o->bp.t0 = g->t0;
+    o->span_end = g->T;
     span_start(o, g->t0, allow_instant);
     if (o->nfound) return take_first(o, g->t0, ev);
     while (k <= g->n) {

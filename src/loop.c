@@ -1,20 +1,26 @@
 /* loop.c — the frame loop: the coordinator of ARCHITECTURE "the loop,
  * once" (thesis 3.4.2 and 3.5.2).
  *
- * Per frame [t, T]: the owners run their pairs through the span on the
- * grid computed here from the global state; the earliest event by (time,
- * pair order) is taken; every clock advances to it; its owner responds;
- * the new states go to every holder; the next span starts at the event.
- * At the frame end, rest is decided from the bodies' states.
+ * Per frame [t, T], a contact step at a time (SPEC 7): the island step at
+ * its start (island_step.c); then the owners run their pairs through the
+ * span to the step's end on the grid computed here from the global state;
+ * the earliest event by (time, pair order) is taken; every clock advances
+ * to it; its owner responds; the new states go to every holder; the next
+ * span starts at the event.  At the frame end, rest is decided.
  *
  *   span_grid      the internal steps of a span (SPEC 3.2)
  *   reach_changed  the grid's reach bounds follow the bodies an event changed
+ *   contact_steps, contact_point   the frame's contact steps
+ *   run_span       the events of a span
  *   run_frame      one frame: the loop
  */
 #include <time.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include "config.h"
 #include "owners.h"
 #include "rest.h"
+#include "island_step.h"
 
 static double now_ms(void)
 {
@@ -23,15 +29,17 @@ static double now_ms(void)
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
-/* the grid of the span [ts, T] (SPEC 3.2) */
-static void span_grid(const vrWorld *w, double ts, double T, const vrParams *p, vrGrid *g)
+/* the grid of the span [ts, end] of the frame ending at T (SPEC 3.2): the
+ * reach bounds kept for the rest of the frame hold for the span too */
+static void span_grid(const vrWorld *w, double ts, double end, double T, const vrParams *p, vrGrid *g)
 {
     if (!w->reach.valid || !(w->reach.T == T) || w->reach.n != w->ndyn) {
-        vrSchedule_Grid(w->dyn, w->ndyn, ts, T, p->d, w->s.internal_step, &p->flight, g);
-        return;
+        vrSchedule_Grid(w->dyn, w->ndyn, ts, end, p->d, w->s.internal_step, &p->flight, g);
+    } else {
+        double fastest = vrSchedule_NeedsReach(ts, end, w->s.internal_step) ? vrReach_Fastest(&w->reach, w->dyn, ts, &p->flight) : 0;
+        vrSchedule_GridFor(fastest, ts, end, p->d, w->s.internal_step, g);
     }
-    vrSchedule_GridFor(vrSchedule_NeedsReach(ts, T, w->s.internal_step) ? vrReach_Fastest(&w->reach, w->dyn, ts, &p->flight) : 0,
-                       ts, T, p->d, w->s.internal_step, g);
+    g->frame_T = T;
 }
 
 /* the bodies an event changed have new reach bounds */
@@ -42,57 +50,128 @@ static void reach_changed(vrWorld *w, const vrUpdate *up, const vrParams *p)
         if (up->body[k].id < w->ndyn_slot) vrReach_Changed(&w->reach, w->dyn, w->dyn_slot[up->body[k].id], up->body[k].t, &p->flight);
 }
 
-/* Runs [t, t + time_step]: ARCHITECTURE "the loop, once". */
-static int run_frame(vrWorld *w, char *err, size_t n)
+/* the contact steps of a frame: the frame cut into equal steps no longer
+ * than contact_step (SPEC 7), so that island steps fall at the same times
+ * whatever happens in between */
+static long contact_steps(const vrWorld *w)
 {
-    double T = w->t_base + (double)(w->frames + 1 - w->frames_base) * w->s.time_step, ts = w->t;
-    vrParams p = vrSettings_Params(&w->s);
-    /* the responses at the last instant so far: a frame ending at an
-     * instant that had its VR_INSTANT_MAX does not give it more */
-    double instant_t = w->instant_t;
-    int instant = w->instant;
-    w->subframes = 0;
-    vrReach_Frame(&w->reach, w->dyn, w->ndyn, ts, T, &p.flight);
+    double k = ceil(w->s.time_step / w->s.contact_step);
+    return k < 1 ? 1 : k > 1e6 ? 1000000 : (long)k;
+}
+
+/* the start of contact step k of the frame [ts, T] (k = steps: T itself) */
+static double contact_point(double ts, double T, long k, long steps)
+{
+    return k >= steps ? T : ts + (T - ts) * (double)k / (double)steps;
+}
+
+/* an island step is needed while some dynamic body can move */
+static int moving_bodies(const vrWorld *w)
+{
+    int i;
+    for (i = 0; i < w->ndyn; i++)
+        if (!w->dyn[i]->resting) return 1;
+    return 0;
+}
+
+/* pairwise answers to the follow-ups of a response at one instant, when
+ * bounces are in play, before the rest are answered together */
+#define VR_PAIRWISE_MAX 16
+
+typedef struct Frame {
+    double T;                /* the frame's end */
+    double ts;               /* where the owners look from */
+    double instant_t;        /* the responses at the last instant so far: a frame ending */
+    int instant;             /* at an instant that had its VR_INSTANT_MAX does not give it more */
+} Frame;
+
+/* SPEC 7: a contact impulse that follows a response at its instant (a
+ * box coming down on a stack, a ball on a board on a ball) is answered
+ * with every contact of its islands together (island_step.c), not one
+ * corner at a time: at once when the pair cannot bounce, after
+ * VR_PAIRWISE_MAX pairwise answers when it can (a Newton's cradle's
+ * impulses go down the row one by one, as they must to send out one
+ * ball).  The decision reads only the bodies, as every owner set can. */
+static int answered_together(const vrWorld *w, const Frame *f, const vrEvent *ev)
+{
+    double e;
+    if (ev->kind != VR_EV_CONTACT || ev->t != f->instant_t) return 0;
+    e = fmin(w->table.obj[ev->a]->body.elasticity, w->table.obj[ev->b]->body.elasticity);
+    return e == 0 || f->instant >= VR_PAIRWISE_MAX;
+}
+
+/* the events of [f->ts, end]: the owners' first event of all, answered,
+ * until there is none before end.  0, -1, or VR_RESTART_FRAME. */
+static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *err, size_t n)
+{
     for (;;) {
         vrGrid g;
         vrEvent ev;
         int r;
-        span_grid(w, ts, T, &p, &g);
-        r = vrOwners_Of(w)->first_event(w, &g, instant < VR_INSTANT_MAX, &ev, err, n);
-        if (r == VR_RESTART_FRAME) goto restart;
-        if (r < 0) return -1;
-        if (r == 0) {
-            w->update.n = 0;
-            r = vrRest_SeveralSupports(w, T, vrOwners_Of(w), &w->update, err, n);
-            if (r == VR_RESTART_FRAME) goto restart;
-            if (r != 0 || vrWorld_ApplyUpdate(w, &w->update) != 0) return -1;
-            vrOwners_Of(w)->end_frame(w, T);
-            w->subframes += g.n;
-            break;
+        span_grid(w, f->ts, end, f->T, p, &g);
+        r = vrOwners_Of(w)->first_event(w, &g, f->instant < VR_INSTANT_MAX, &ev, err, n);
+        if (r != 1) {
+            if (r == 0) w->subframes += g.n;
+            return r;
         }
-        w->subframes += ev.t > ts ? vrSchedule_FirstPointAtOrAfter(&g, ev.t) : 0;
+        w->subframes += ev.t > f->ts ? vrSchedule_FirstPointAtOrAfter(&g, ev.t) : 0;
+        if (answered_together(w, f, &ev)) {
+            r = vrIsland_Instant(w, ev.t, ev.a, ev.b, err, n);
+            if (r != 0) return r;
+            reach_changed(w, &w->update, p);
+            f->instant++;
+            f->ts = ev.t;
+            continue;
+        }
         w->update.n = 0;
         r = vrOwners_Of(w)->respond(w, &ev, &w->update, err, n);
-        if (r == VR_RESTART_FRAME) goto restart;
-        if (r != 0) return -1;
+        if (r != 0) return r;
         if (ev.kind == VR_EV_IMPACT || ev.kind == VR_EV_CONTACT) w->collisions++;
         if (vrWorld_ApplyUpdate(w, &w->update) != 0) return vrGeom_Fail(err, n, "out of memory");
-        reach_changed(w, &w->update, &p);
-        instant = ev.t == instant_t ? instant + 1 : 1;
-        instant_t = ev.t;
-        ts = ev.t;
-        continue;
-    restart:                 /* a worker died: the frame again from its start */
-        ts = w->t;
-        vrReach_Frame(&w->reach, w->dyn, w->ndyn, ts, T, &p.flight);
-        instant = w->instant;
-        instant_t = w->instant_t;
-        w->subframes = 0;
+        reach_changed(w, &w->update, p);
+        f->instant = ev.t == f->instant_t ? f->instant + 1 : 1;
+        f->instant_t = ev.t;
+        f->ts = ev.t;
     }
-    w->t = T;
+}
+
+/* Runs [t, t + time_step]: ARCHITECTURE "the loop, once", a contact step
+ * at a time (SPEC 7): the island step at its start, then its events. */
+static int run_frame(vrWorld *w, char *err, size_t n)
+{
+    vrParams p = vrSettings_Params(&w->s);
+    long steps = contact_steps(w), k;
+    Frame f;
+    f.T = w->t_base + (double)(w->frames + 1 - w->frames_base) * w->s.time_step;
+    f.ts = w->t;
+    f.instant_t = w->instant_t;
+    f.instant = w->instant;
+    w->subframes = 0;
+    vrReach_Frame(&w->reach, w->dyn, w->ndyn, f.ts, f.T, &p.flight);
+    for (k = 0; k < steps; k++) {
+        double at = contact_point(w->t, f.T, k, steps), end = contact_point(w->t, f.T, k + 1, steps);
+        int r = f.T > w->t && moving_bodies(w) ? vrIsland_Step(w, at, end - at, err, n) : 0;
+        if (r == 0) {
+            reach_changed(w, &w->update, &p);
+            f.ts = at;
+            r = run_span(w, &f, end, &p, err, n);
+        }
+        if (r == VR_RESTART_FRAME) {   /* a worker died: the frame again from its start */
+            f.ts = w->t;
+            vrReach_Frame(&w->reach, w->dyn, w->ndyn, f.ts, f.T, &p.flight);
+            f.instant = w->instant;
+            f.instant_t = w->instant_t;
+            w->subframes = 0;
+            k = -1;
+            continue;
+        }
+        if (r != 0) return -1;
+    }
+    vrOwners_Of(w)->end_frame(w, f.T);
+    w->t = f.T;
     w->frames++;
-    w->instant = instant;
-    w->instant_t = instant_t;
+    w->instant = f.instant;
+    w->instant_t = f.instant_t;
     w->update.n = 0;
     if (vrRest_FrameEnd(w, &w->update) != 0 || vrWorld_ApplyUpdate(w, &w->update) != 0)
         return vrGeom_Fail(err, n, "out of memory");

@@ -280,22 +280,13 @@ void vrBody_Pose(vrBody *b, double t, vrPose *pose)
 
 /* ---- anchoring ------------------------------------------------------------ */
 
-/* the global force less its components along the supporting normals (SPEC
- * 3.1: a supported body slides, frictionless, at constant distance) */
-static vec3 supported_accel(const vrBody *b, vec3 g)
+/* the global force, but in an island's contact step: the island step paid
+ * the step's gravity into the velocity at its start (semi-implicit Euler,
+ * which is dissipative with inelastic contact), so the body flies on
+ * straight to the next one (island.h, SPEC 7) */
+static vec3 flight_accel(const vrBody *b, vec3 g)
 {
-    vec3 basis[VR_MAX_SUPPORTS], a = g;
-    int nb = 0, i, j;
-    for (i = 0; i < b->nsupport; i++) {
-        vec3 e = b->support[i].n;
-        double l;
-        for (j = 0; j < nb; j++) e = vec3_madd(e, -vec3_dot(e, basis[j]), basis[j]);
-        l = vec3_len(e);
-        if (l < 1e-9) continue;
-        basis[nb++] = vec3_scale(e, 1.0 / l);
-    }
-    for (j = 0; j < nb; j++) a = vec3_madd(a, -vec3_dot(a, basis[j]), basis[j]);
-    return a;
+    return b->is_static || b->resting || b->contact ? vec3_zero() : g;
 }
 
 static void classify_rotation(vrBody *b)
@@ -361,7 +352,7 @@ void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vr
         double w = vec3_len(omega_at(b, &R));
         if (w > f->max_angular) m->L = vec3_scale(L, f->max_angular / w);
     }
-    m->a = b->is_static || b->resting ? vec3_zero() : supported_accel(b, f->accel);
+    m->a = flight_accel(b, f->accel);
     m->tcap = cap_time(m->v0, m->a, f->max_linear);
     classify_rotation(b);
     reset_rotation_cache(b);
@@ -377,7 +368,7 @@ void vrBody_Restore(vrBody *b, double t0, vec3 x0, vec3 v0, quat q0, vec3 L, con
     m->v0 = v0;
     m->q0 = q0;
     m->L = L;
-    m->a = b->is_static || b->resting ? vec3_zero() : supported_accel(b, f->accel);
+    m->a = flight_accel(b, f->accel);
     m->tcap = cap_time(m->v0, m->a, f->max_linear);
     classify_rotation(b);
     reset_rotation_cache(b);

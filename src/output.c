@@ -82,6 +82,7 @@ int vrWorld_WriteStats(const vrWorld *w, FILE *out)
             s.frames, t, s.objects, s.dynamic, s.resting, s.pairs, s.subframes, s.subframes_thesis,
             s.checks, s.heap_pops, s.collisions, s.klu_solves, s.klu_refactors, s.klu_factors, e,
             s.frame_ms, s.sim_ms, s.render_ms);
+    fprintf(out, " island_steps=%lld island_contacts=%lld", s.island_steps, s.island_contacts);
     if (s.gps > 0) {
         fprintf(out, " gps=%d messages=%lld copies=%lld", s.gps, s.messages, s.copies);
         put_list(out, "gp_checks", s.gp_checks, s.gps);

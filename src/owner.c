@@ -30,6 +30,8 @@ vrOwner *vrOwner_Create(void)
     vrHeap_Init(&o->heap);
     o->responder = vrResponder_Create();
     o->pending_t = -INFINITY;
+    o->gather_t = NAN;       /* no island step yet: no pair is an island's */
+    o->gather_h = INFINITY;
     vrBroad_Init(&o->bp);
     o->p.use_heap = 1;
     if (!o->responder) {
@@ -198,6 +200,7 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
     p->t_check = -INFINITY;
     p->key = -INFINITY;
     p->quiet_until = -INFINITY;
+    p->touch_t = -INFINITY;
     p->active = -1;
     if (vrGrow((void **)&o->hot, &o->hotcap, o->npair + 1, sizeof *o->hot) != 0) return -1;
     o->hot[o->npair] = 0;
@@ -221,7 +224,8 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
         vrPair_Query(o, p, t, 0, &pa, &pb, &c);
         inside = c.dist <= o->p.d;
         p->t_check = t;
-        o->pair[o->npair - 1].near = c.dist <= o->gc;
+        o->pair[o->npair - 1].near = vrPair_Near(o, c.dist);
+        o->pair[o->npair - 1].overlap = c.dist < -VR_PENETRATION_TOL;
         vrPair_Settle(o, o->npair - 1, inside, inside ? t : vrPair_Key(o, &o->pair[o->npair - 1], t, c.dist, c.n));
     }
     return 0;
@@ -279,12 +283,6 @@ void vrOwner_DropBody(vrOwner *o, int id)
     o->npending = 0;
     o->nundo = 0;
     reindex(o);
-}
-
-/* either body of the pair rests on (or slides over) the other */
-int vrOwner_SupportedPair(const vrOwner *o, int a, int b)
-{
-    return vrBody_SupportKind(o->body[a], b) || vrBody_SupportKind(o->body[b], a);
 }
 
 /* a pair's status and key after an evaluation, and where it waits */

@@ -23,6 +23,8 @@
 #define VR_INSTANT_MAX 64      /* responses at one instant before moving on (SPEC 3.1) */
 #define VR_PENETRATION_TOL 1e-9
 #define VR_START_OVERLAP 1e-4  /* m: deeper overlaps refuse to start (SPEC 1.4, 7: a saved pile starts again) */
+#define VR_OVERLAP_SLOP VR_SHALLOW_OVERLAP  /* shallower overlaps of touching bodies are left as they
+                                  are (SPEC 7: overlap is prevented, not pushed out); deeper ones are pushed out */
 #define VR_CONTACT_GAP 1e-3    /* m: impacts and rest act this far apart at most (SPEC 7) */
 
 typedef struct vrParams {
@@ -80,12 +82,14 @@ void vrOwner_Advance(vrOwner *o, double t);
 /* the new states of the bodies an event changes; -1 if the solve fails */
 int vrOwner_Respond(vrOwner *o, const vrEvent *ev, vrUpdate *up);
 void vrOwner_Stats(const vrOwner *o, vrOwnerStats *s);
-/* Frame end: the contacts that could carry a body no single contact
- * carries — for each body with want[id] set (ids below nwant): inside pairs
- * against a static, resting or supported partner that the force presses
- * it onto, with no region point moving along the normal faster than the
- * no-bounce speed sqrt(2|a|d).  Appends to out; -1 on no memory. */
-int vrOwner_SupportCandidates(vrOwner *o, double t, const unsigned char *want, int nwant, vrCandidates *out);
+/* An island step at t for a contact step of h (SPEC 7): appends to out
+ * every pair of this owner's that touches at t (within twice the contact
+ * gap), with its region's points and their gaps; those pairs' approach is
+ * the island's to stop until the next island step.  h = 0: the contacts
+ * of an instant, to be solved at once (follow-ups of a response), every
+ * touching pair that does not leave, and nothing marked.  Every clock must
+ * be at t.  -1 on no memory. */
+int vrOwner_Touching(vrOwner *o, double t, double h, vrTouches *out);
 /* fn(ctx) is called every few hundred pair evaluations during a look-ahead
  * (a worker sends heartbeats from it while it cannot answer) */
 void vrOwner_SetProgress(vrOwner *o, void (*fn)(void *ctx), void *ctx);

@@ -25,11 +25,13 @@ typedef struct vrPair {
     long long order;
     int inside;               /* distance <= d at t_check: in the envelope */
     int near;                 /* distance <= g_c at t_check: touching (vrParams_Gap) */
+    int overlap;              /* distance < -VR_PENETRATION_TOL at t_check */
     int scheduled;            /* 0 when both bodies are frozen (static or resting) */
     int flagged;              /* to be evaluated at the next span start */
     double t_check;
     double key;               /* expected earliest event (in the heap when scheduled and finite) */
     double quiet_until;       /* inside, but nothing can happen until then (quiet_slide) */
+    double touch_t;           /* the last island step it touched at (vrOwner_Touching) */
     int active;               /* index in the active list, or -1 */
     vrWalkCache cache;
 } vrPair;
@@ -42,7 +44,7 @@ enum { HOT_DORMANT = 1, HOT_INSIDE = 2, HOT_LISTED_A = 4, HOT_LISTED_B = 8 };
 typedef struct vrUndo {
     int pair;
     double at;                /* the evaluation time */
-    int inside, near;
+    int inside, near, overlap;
     double t_check;
     double key, quiet_until;
 } vrUndo;
@@ -63,6 +65,8 @@ typedef struct vrRegionMemo {
 struct vrOwner {
     vrParams p;
     double gc, region;        /* vrParams_Gap, vrParams_RegionLevel */
+    double gather_t, gather_h; /* the last island step's time and length (vrOwner_Touching) */
+    double span_end;          /* the end of the span being looked through: the next island step */
     double v_rest;            /* sqrt(2 |a| g_c), SPEC 3.1, 7 */
     vrBody **body;            /* by id, NULL when not held */
     vrIntList *body_pairs;    /* by id: indices of its pairs */
@@ -102,14 +106,15 @@ struct vrOwner {
 
 static inline int vrBody_Frozen(const vrBody *b) { return b->is_static || b->resting; }
 static inline int vrBody_IsSphere(const vrBody *b) { return b->shape.kind == VR_SHAPE_SPHERE; }
-/* 0: partner does not support x; 1: alone; 2: together with others */
-static inline int vrBody_SupportKind(const vrBody *x, int partner)
-{
-    int i;
-    for (i = 0; i < x->nsupport; i++)
-        if (x->support[i].partner == partner) return x->support[i].joint ? 2 : 1;
-    return 0;
-}
+
+/* touching at the last island step: its approach is the island's to stop,
+ * until the next (pair_events.c's too_fast) */
+static inline int vrPair_InIsland(const vrOwner *o, const vrPair *p) { return p->touch_t == o->gather_t; }
+
+/* touching: within g_c, and a rounding's width more (VR_PENETRATION_TOL),
+ * so that a pair resting at g_c does not cross it back and forth by
+ * rounding and make an impact of each crossing */
+static inline int vrPair_Near(const vrOwner *o, double dist) { return dist <= o->gc + VR_PENETRATION_TOL; }
 
 /* owner.c: containers, and where a pair waits */
 int vrIntList_Push(vrIntList *l, int v);
@@ -120,7 +125,6 @@ void vrPair_Place(vrOwner *o, int pi);               /* into the heap or the act
 void vrPair_UpdateSchedule(vrOwner *o, int pi);      /* unscheduled when both bodies are frozen */
 double vrPair_Key(const vrOwner *o, const vrPair *p, double t, double dist, vec3 n);
 void vrPair_Settle(vrOwner *o, int pi, int inside, double key);   /* after an evaluation */
-int vrOwner_SupportedPair(const vrOwner *o, int a, int b);         /* either supports the other */
 
 /* dormancy.c */
 int vrPair_Apart(vrOwner *o, int pi);               /* cannot meet before the frame ends */
@@ -140,7 +144,6 @@ double vrPair_Bisect(vrOwner *o, vrPair *p, double lo, double hi, const vrContac
                      double wanted);
 
 /* pair_events.c: 1 with *ev when the pair has that event */
-int vrPair_LostSupport(vrOwner *o, vrEvent *ev, double t, const vrPair *p, const vrContact *c);
 int vrPair_InsideEvents(vrOwner *o, vrEvent *ev, double t, const vrPair *p, const vrPose *pa,
                         const vrPose *pb, const vrContact *c);
 int vrPair_Impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau);

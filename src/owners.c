@@ -145,14 +145,14 @@ static int serial_overlapping(vrWorld *w, double tol, const int *ids, int nids, 
     return k < 0 ? vrGeom_Fail(err, n, "out of memory") : k;
 }
 
-static int serial_candidates(vrWorld *w, double T, const unsigned char *want, vrCandidates *out, char *err, size_t n)
+static int serial_touching(vrWorld *w, double t, double h, vrTouches *out, char *err, size_t n)
 {
-    if (deliver(w) != 0 || vrOwner_SupportCandidates(w->owner, T, want, w->table.n, out) != 0)
-        return vrGeom_Fail(err, n, "out of memory");
+    vrOwner_Advance(w->owner, t);
+    if (deliver(w) != 0 || vrOwner_Touching(w->owner, t, h, out) != 0) return vrGeom_Fail(err, n, "out of memory");
     return 0;
 }
 
 static const vrOwnerSet serial_owners = {serial_first_event, serial_respond, serial_end_frame, serial_overlapping,
-                                         serial_candidates};
+                                         serial_touching};
 
 const vrOwnerSet *vrOwners_Of(const vrWorld *w) { return w->s.gps > 0 ? &vrSgp_Owners : &serial_owners; }

@@ -20,9 +20,10 @@ typedef struct vrOwnerSet {
     /* the pairs of the bodies ids[0..nids) overlapping deeper than tol */
     int (*overlapping)(vrWorld *w, double tol, const int *ids, int nids, int (*out)[2], int max, char *err,
                        size_t n);
-    /* frame end T: contacts that could carry the bodies with want[id] */
-    int (*support_candidates)(vrWorld *w, double T, const unsigned char *want, vrCandidates *out,
-                              char *err, size_t n);
+    /* an island step at t for a contact step of h (h = 0: the contacts of
+     * an instant, VR_TOUCH_INSTANT): every clock moves to t, and the pairs
+     * that touch there are appended to out (vrOwner_Touching) */
+    int (*touching)(vrWorld *w, double t, double h, vrTouches *out, char *err, size_t n);
 } vrOwnerSet;
 
 #endif

@@ -1,12 +1,14 @@
 /* pair_events.c — which event a pair has at a time it was looked at
- * (SPEC 3.1): an impact or a touch at a bisected moment, and inside the
- * envelope a push-out, a contact impulse, or support beginning or ending;
- * at a frame end, the contacts that could carry a body together (rest.c).
+ * (SPEC 3.1, 7): an impact or a touch at a bisected moment, and within the
+ * contact gap a push-out or a contact impulse; at an island step, the
+ * pairs that touch (island_step.c solves them together).
  *   approach           the region points' normal velocities
  *   *_event            an event filled in
- *   supports           SPEC 3.1's support test
- *   vrPair_InsideEvents, vrPair_LostSupport, vrPair_Impact, vrPair_Touch
- *   candidate, vrOwner_SupportCandidates */
+ *   too_fast           a contact impulse's test: faster than v_eps, or for a
+ *                      pair of an island faster than its step allows
+ *   vrPair_InsideEvents, vrPair_Impact, vrPair_Touch
+ *   keep_points, touch_of, vrOwner_Touching   the island step's contacts */
+#include <stdlib.h>
 #include <string.h>
 #include "owner_state.h"
 
@@ -55,7 +57,6 @@ static void fill_event(vrEvent *ev, int kind, double t, const vrPair *p, const v
     ev->a = p->a;
     ev->b = p->b;
     ev->n = c->n;
-    ev->body = ev->partner = -1;
 }
 
 static double restitution(const vrOwner *o, const vrPair *p, double speed)
@@ -72,89 +73,21 @@ static void impulse_event(vrOwner *o, vrEvent *ev, int kind, double t, const vrP
     ev->c = ap->centroid;
     ev->approach = ap->umin;
     ev->e = restitution(o, p, -ap->umin);
+    ev->mu = sqrt(o->body[p->a]->friction * o->body[p->b]->friction);
 }
 
-/* SPEC 3.1: x is supported through this contact when its partner is static,
- * resting or supported, the force presses x onto it, nothing approaches or
- * separates faster than v_eps, and the reaction can balance the force: the
- * line through x's centre of mass along the contact normal meets the contact
- * region (on a level support this is the projection along the force; on a
- * slope it is where a frictionless reaction can act) */
-static int supports(const vrOwner *o, const vrBody *x, const vrBody *y, vec3 n_yx, const vrPose *px,
-                    const vrContact *c, const vrApproach *ap, int joint)
+/* A pair of an island (touching at the last island step) may close each
+ * point's gap to g_c within the step (island.h's floors): a contact
+ * impulse answers only what approaches faster than that, and none at the
+ * step's end, where the next island step answers it.  Any other pair:
+ * faster than v_eps. */
+static int too_fast(const vrOwner *o, const vrPair *p, double t, const vrContact *c, const vrApproach *ap)
 {
-    vec3 g = o->p.flight.accel, q;
-    double gl = vec3_len(g);
-    if (vrBody_Frozen(x) || !(vrBody_Frozen(y) || y->nsupport > 0) || c->npoints == 0) return 0;
-    if (gl == 0 || vec3_dot(g, n_yx) > -1e-6 * gl) return 0;
-    if (ap->umin < -VR_V_EPS || ap->umax > VR_V_EPS) return 0;
-    if (joint) return 1;    /* the regions together are checked at frame ends (rest.c) */
-    q = vec3_madd(px->p, vec3_dot(vec3_sub(c->point[0], px->p), n_yx), n_yx);
-    return vrRegion_Contains(c->point, c->npoints, n_yx, q, VR_CONTAIN_TOL);
-}
-
-/* Up to three corners of a contact region that span it: the first point,
- * the one farthest from it, and the one farthest from the line of those
- * two (a segment or a single point when the region is one). */
-#define SPAN_TOL 1e-7   /* m: thinner than this, a region is a segment (or a point) */
-static int region_corners(const vrContact *c, vec3 corner[3])
-{
-    int i, k = 1;
-    double best = SPAN_TOL;
-    vec3 e;
-    corner[0] = c->point[0];
-    for (i = 1; i < c->npoints; i++) {
-        double l = vec3_dist(c->point[i], corner[0]);
-        if (l > best) best = l, corner[1] = c->point[i], k = 2;
-    }
-    if (k < 2) return k;
-    e = vec3_normalize(vec3_sub(corner[1], corner[0]));
-    best = SPAN_TOL;
-    for (i = 1; i < c->npoints; i++) {
-        vec3 r = vec3_sub(c->point[i], corner[0]);
-        double h = vec3_len(vec3_madd(r, -vec3_dot(r, e), e));
-        if (h > best) best = h, corner[2] = c->point[i], k = 3;
-    }
-    return k;
-}
-
-static int support_event(vrEvent *ev, int kind, double t, const vrPair *p, const vrContact *c,
-                         int body, int partner, vec3 n_yx, vec3 centre)
-{
-    fill_event(ev, kind, t, p, c);
-    ev->body = body;
-    ev->partner = partner;
-    ev->n = n_yx;
-    ev->c = centre;
-    if (kind == VR_EV_SUPPORT_BEGIN) ev->ncorner = region_corners(c, ev->corner);   /* for settle_on_support */
-    return 1;
-}
-
-/* support begins or ends for either body of an inside pair */
-static int support_change(vrOwner *o, vrEvent *ev, double t, const vrPair *p, const vrPose *pa,
-                          const vrPose *pb, const vrContact *c, const vrApproach *ap)
-{
-    int side;
-    for (side = 0; side < 2; side++) {
-        int x = side ? p->b : p->a, y = side ? p->a : p->b;
-        vec3 n_yx = side ? c->n : vec3_neg(c->n);
-        int now, was;
-        if (vrBody_Frozen(o->body[x])) continue;
-        was = vrBody_SupportKind(o->body[x], y);
-        now = supports(o, o->body[x], o->body[y], n_yx, side ? pb : pa, c, ap, was == 2);
-        if (was && !now) return support_event(ev, VR_EV_SUPPORT_END, t, p, c, x, y, n_yx, ap->region_centre);
-        if (!was && now && o->body[x]->nsupport < VR_MAX_SUPPORTS)
-            return support_event(ev, VR_EV_SUPPORT_BEGIN, t, p, c, x, y, n_yx, ap->region_centre);
-    }
-    return 0;
-}
-
-int vrPair_LostSupport(vrOwner *o, vrEvent *ev, double t, const vrPair *p, const vrContact *c)
-{
-    if (vrBody_SupportKind(o->body[p->a], p->b))
-        return support_event(ev, VR_EV_SUPPORT_END, t, p, c, p->a, p->b, vec3_neg(c->n), c->pa);
-    if (vrBody_SupportKind(o->body[p->b], p->a))
-        return support_event(ev, VR_EV_SUPPORT_END, t, p, c, p->b, p->a, c->n, c->pb);
+    int i;
+    if (!vrPair_InIsland(o, p)) return ap->umin < -VR_V_EPS;
+    if (t == o->span_end) return 0;     /* the next island step, at this instant, takes it */
+    for (i = 0; i < c->npoints; i++)
+        if (ap->u[i] < -(VR_V_EPS + vr_max(0, c->gap[i] - o->gc) / o->gather_h)) return 1;
     return 0;
 }
 
@@ -163,18 +96,16 @@ int vrPair_InsideEvents(vrOwner *o, vrEvent *ev, double t, const vrPair *p, cons
                          const vrPose *pb, const vrContact *c)
 {
     vrApproach ap;
-    if (c->dist < -VR_PENETRATION_TOL) {
+    if (c->dist < -VR_OVERLAP_SLOP) {
         fill_event(ev, VR_EV_PUSHOUT, t, p, c);
         ev->depth = -c->dist;
         ev->c = c->pa;
         return 1;
     }
     approach(o, p, t, pa, pb, c, &ap);
-    if (ap.umin < -VR_V_EPS) {
-        impulse_event(o, ev, VR_EV_CONTACT, t, p, c, &ap);
-        return 1;
-    }
-    return support_change(o, ev, t, p, pa, pb, c, &ap);
+    if (!too_fast(o, p, t, c, &ap)) return 0;
+    impulse_event(o, ev, VR_EV_CONTACT, t, p, c, &ap);
+    return 1;
 }
 
 /* An impulse event of kind at tau if the contact points approach there
@@ -193,10 +124,11 @@ static int impulse_at(vrOwner *o, vrEvent *ev, vrPair *p, double tau, int kind, 
     return 1;
 }
 
-/* an impact at tau if the contact points approach there */
+/* an impact at tau if the contact points approach there (a pair of an
+ * island, faster than v_eps: one at rest there crosses g_c by rounding) */
 int vrPair_Impact(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
 {
-    return impulse_at(o, ev, p, tau, VR_EV_IMPACT, 0, INFINITY);
+    return impulse_at(o, ev, p, tau, VR_EV_IMPACT, vrPair_InIsland(o, p) ? VR_V_EPS : 0, INFINITY);
 }
 
 /* A pair inside the envelope at the last grid point found overlapping at
@@ -214,45 +146,83 @@ int vrPair_Touch(vrOwner *o, vrEvent *ev, vrPair *p, double tau)
     return impulse_at(o, ev, p, tau, VR_EV_CONTACT, VR_V_EPS, VR_PENETRATION_TOL);
 }
 
-static int candidate(vrOwner *o, const vrPair *p, int side, double t, vrCandidates *out)
+/* At most VR_TOUCH_POINTS of a region's points, in its order: those
+ * extreme along as many directions spread evenly in the contact plane
+ * (the corners that carry it), and the least gap among the rest kept in
+ * the nearest one kept (the solve then never lets a point it drops close
+ * in further than the one that stands for it). */
+static void keep_points(const vrContact *c, vrTouch *k)
 {
-    int x = side ? p->b : p->a, y = side ? p->a : p->b;
-    vrBody *Y = o->body[y];
-    vec3 g = o->p.flight.accel, n_yx;
-    vrPose pa, pb, py;
+    int keep[VR_REGION_MAX] = {0}, i, d, m = 0;
+    vec3 t1 = vec3_orthogonal(c->n), t2 = vec3_cross(c->n, t1);
+    if (c->npoints <= VR_TOUCH_POINTS) {
+        for (i = 0; i < c->npoints; i++) k->point[i] = c->point[i], k->gap[i] = c->gap[i];
+        k->npoints = c->npoints;
+        return;
+    }
+    for (d = 0; d < VR_TOUCH_POINTS; d++) {
+        vec3 dir = vec3_add(vec3_scale(t1, cos(2 * VR_PI * d / VR_TOUCH_POINTS)), vec3_scale(t2, sin(2 * VR_PI * d / VR_TOUCH_POINTS)));
+        int best = 0;
+        for (i = 1; i < c->npoints; i++)
+            if (vec3_dot(dir, c->point[i]) > vec3_dot(dir, c->point[best])) best = i;
+        keep[best] = 1;
+    }
+    for (i = 0; i < c->npoints; i++)
+        if (keep[i]) k->point[m] = c->point[i], k->gap[m++] = c->gap[i];
+    k->npoints = m;
+    for (i = 0; i < c->npoints; i++) {
+        int j, near = 0;
+        if (keep[i]) continue;
+        for (j = 1; j < m; j++)
+            if (vec3_dist(c->point[i], k->point[j]) < vec3_dist(c->point[i], k->point[near])) near = j;
+        k->gap[near] = vr_min(k->gap[near], c->gap[i]);
+    }
+}
+
+/* Pair p's contact at t when it touches (within the region's level),
+ * unless it leaves (every point separating faster than v_eps: it flies
+ * on) or every point comes in faster than an impact that does not bounce
+ * would once the step has closed its gap to g_c (v_rest, SPEC 3.1; v_eps
+ * with no force): that is an impact, found at g_c and answered with its
+ * restitution, exactly, as in free flight.  A pair that rests on some
+ * points while others come in fast (a box tipping onto a face) is the
+ * island's, which bounces those points (island_step.c). */
+static int touch_of(vrOwner *o, vrPair *p, double t, double h, vrTouches *out)
+{
+    vrPose pa, pb;
     vrContact c;
     vrApproach ap;
-    vrCandidate *k;
-    if (!(vrBody_Frozen(Y) || Y->nsupport > 0) || vec3_len2(g) == 0) return 0;
-    vrPair_EventQuery(o, (vrPair *)p, t, &pa, &pb, &c);
-    n_yx = side ? c.n : vec3_neg(c.n);
-    if (c.npoints == 0 || vec3_dot(g, n_yx) > -1e-6 * vec3_len(g)) return 0;
+    vrTouch *k;
+    int i;
+    vrPair_EventQuery(o, p, t, &pa, &pb, &c);
+    if (c.npoints == 0 || c.dist > o->region) return 0;
     approach(o, p, t, &pa, &pb, &c, &ap);
-    if (ap.umin < -o->v_rest || ap.umax > o->v_rest) return 0;
-    k = vrCandidates_Add(out);
-    if (!k) return -1;
-    k->body = x;
-    k->partner = y;
-    k->n = n_yx;
-    py = side ? pa : pb;
-    k->partner_velocity = vrBody_PointVelocity(Y, t, &py, ap.region_centre);
-    k->npoints = c.npoints;
-    memcpy(k->point, c.point, (size_t)c.npoints * sizeof c.point[0]);
+    if (ap.umin > VR_V_EPS) return 0;
+    for (i = 0; h > 0 && i < c.npoints && ap.u[i] < -(o->v_rest + VR_V_EPS + vr_max(0, c.gap[i] - o->gc) / h); i++)
+        ;
+    if (h > 0 && i == c.npoints) return 0;
+    if (h > 0) p->touch_t = t;
+    if (!(k = vrTouches_Add(out))) return -1;
+    k->a = p->a, k->b = p->b, k->n = c.n, k->dist = c.dist;
+    keep_points(&c, k);
     return 0;
 }
 
-/* (the order they are found in does not matter: rest.c sorts them by body
- * and partner; with the heap the pairs inside are the active list) */
-int vrOwner_SupportCandidates(vrOwner *o, double t, const unsigned char *want, int nwant, vrCandidates *out)
+/* (the order they are found in does not matter: the coordinator sorts
+ * them by pair; with the heap the pairs in the envelope are the active
+ * list, a pair outside it cannot touch, and one flagged since its last
+ * look, in the flagged list, is looked at here too) */
+int vrOwner_Touching(vrOwner *o, double t, double h, vrTouches *out)
 {
-    int i, side, n = o->p.use_heap ? o->active.n : o->npair;
+    int i, n = o->p.use_heap ? o->active.n + o->flagged.n : o->npair;
+    if (h > 0) o->gather_t = t, o->gather_h = h;
     for (i = 0; i < n; i++) {
-        const vrPair *p = &o->pair[o->p.use_heap ? o->active.v[i] : i];
-        if (!p->near || !p->scheduled) continue;
-        for (side = 0; side < 2; side++) {
-            int x = side ? p->b : p->a;
-            if (x < nwant && want[x] && candidate(o, p, side, t, out) != 0) return -1;
-        }
+        int pi = !o->p.use_heap ? i : i < o->active.n ? o->active.v[i] : o->flagged.v[i - o->active.n];
+        vrPair *p = &o->pair[pi];
+        vec3 dir;
+        if (!(p->inside || p->flagged) || !p->scheduled || (p->inside && p->flagged && i >= o->active.n)) continue;
+        if (!p->inside && vrPair_SphereGap(o, p, t, &dir) > o->region) continue;   /* far apart: no query */
+        if (touch_of(o, p, t, h, out) != 0) return -1;
     }
     return 0;
 }

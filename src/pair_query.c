@@ -1,11 +1,11 @@
 /* pair_query.c — what a look at a pair measures: the canonical distance
  * and contact region at t (contact.c) from the poses at t, a region
- * remembered for the same poses, and the normal that events are decided
- * from (flush surfaces, flush_normal).
+ * remembered for the same poses, and the normal that events and islands
+ * are decided from (flush surfaces, flush_normal).
  *   real_poses       a sphere's turning pose where events need its spin
  *   memo_*           the region memo (a pair asked again at the same poses)
  *   vrPair_Query     distance, or the whole contact with its region
- *   flush_normal     the support's normal across a seam between flush bodies
+ *   flush_normal     straight up across a seam between flush bodies
  *   vrPair_EventQuery the query events are decided from */
 #include <string.h>
 #include "owner_state.h"
@@ -26,7 +26,7 @@ static void copy_contact(vrContact *to, const vrContact *from)
     int i;
     to->dist = from->dist, to->n = from->n, to->pa = from->pa, to->pb = from->pb;
     to->npoints = from->npoints, to->walk_steps = from->walk_steps;
-    for (i = 0; i < from->npoints; i++) to->point[i] = from->point[i];
+    for (i = 0; i < from->npoints; i++) to->point[i] = from->point[i], to->gap[i] = from->gap[i];
 }
 
 /* A contact is a function of the two shapes, their poses and d alone
@@ -75,30 +75,31 @@ void vrPair_Query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPos
 /* Flush surfaces (a table top made of two boxes side by side): a body
  * sliding on one meets the next one's edge at a slant inside the envelope,
  * and the slanted normal would kick it back (Box2D's ghost collisions,
- * Bullet's internal edges).  When x is supported by another body with
- * normal m and frozen y reaches no higher along m than x's lowest point,
- * y cannot stop x sliding along its support: the pair's normal for events
- * and responses is m, as if y were part of the support.  Distances, and so
- * the schedule, are untouched.  A step up higher than x's gap over its
- * support is a real obstacle and keeps its normal. */
+ * Bullet's internal edges).  When x lies on something (in an island's
+ * contact step) and frozen y reaches no higher up (against the global
+ * force, m) than x's lowest point, y cannot stop x sliding over it: the
+ * pair's normal for events, responses and the island is m, as if y were
+ * part of what x lies on.  Distances, and so the schedule, are untouched.
+ * A step up higher than x's gap over it is a real obstacle and keeps its
+ * normal. */
 static void flush_normal(const vrOwner *o, const vrPair *p, const vrPose *pa, const vrPose *pb, vrContact *c)
 {
-    int side, i;
-    if (c->dist <= 0) return;
+    vec3 g = o->p.flight.accel, m;
+    int side;
+    if (c->dist <= 0 || vec3_len2(g) == 0) return;
+    m = vec3_normalize(vec3_neg(g));
     for (side = 0; side < 2; side++) {
         const vrBody *x = o->body[side ? p->b : p->a], *y = o->body[side ? p->a : p->b];
         const vrPose *px = side ? pb : pa, *py = side ? pa : pb;
         vec3 n_yx = side ? c->n : vec3_neg(c->n);
-        if (vrBody_Frozen(x) || !vrBody_Frozen(y)) continue;
-        for (i = 0; i < x->nsupport; i++) {
-            vec3 m = x->support[i].n;
-            if (x->support[i].partner == (side ? p->a : p->b) || vec3_dot(n_yx, m) >= 1 - 1e-12) continue;
-            double y_top = vec3_dot(m, vrShape_Support(&y->shape, py, m));
-            double x_bottom = vec3_dot(m, vrShape_Support(&x->shape, px, vec3_neg(m)));
-            if (y_top > x_bottom + VR_CONTAIN_TOL) continue;
-            c->n = side ? m : vec3_neg(m);
-            return;
-        }
+        double y_top, x_bottom;
+        if (vrBody_Frozen(x) || !x->contact || !vrBody_Frozen(y) || vec3_dot(n_yx, m) >= 1 - 1e-12) continue;
+        y_top = vec3_dot(m, vrShape_Support(&y->shape, py, m));
+        x_bottom = vec3_dot(m, vrShape_Support(&x->shape, px, vec3_neg(m)));
+        if (y_top > x_bottom + VR_CONTAIN_TOL) continue;
+        c->n = side ? m : vec3_neg(m);
+        if (vrBody_IsSphere(x) && c->npoints == 1) c->point[0] = vec3_madd(px->p, -x->shape.radius, m);   /* below it */
+        return;
     }
 }
 

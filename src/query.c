@@ -31,7 +31,7 @@ static vrMotionState motion_state(const vrBody *b)
 {
     if (b->is_static) return VR_STATE_STATIC;
     if (b->resting) return VR_STATE_REST;
-    return b->nsupport > 0 ? VR_STATE_SUPPORTED : VR_STATE_MOVING;
+    return b->contact ? VR_STATE_SUPPORTED : VR_STATE_MOVING;   /* SPEC 7: in an island's contact step */
 }
 
 int vrWorld_GetObjectState(const vrWorld *cw, vrObjectId id, vrObjectState *st)
@@ -107,6 +107,8 @@ void vrWorld_GetStats(const vrWorld *cw, vrStats *st)
     }
     if (w->sgp) vrSgp_Stats(w->sgp, st);
     st->collisions = w->collisions;
+    st->island_steps = w->island_steps;
+    st->island_contacts = w->island_contacts;
     st->frame_ms = w->frame_ms;
     st->sim_ms = w->sim_ms;
     st->render_ms = w->render_ms;

@@ -53,6 +53,8 @@ static int add_box(vrWorld *w, const char *name, vec3 half, vec3 at, char *err, 
     d.mass = -1;
     d.mass_set = 1;
     d.real = 1;
+    d.elasticity = w->s.default_elasticity;   /* SPEC 7: the walls take both defaults */
+    d.friction = w->s.default_friction;
     d.color[0] = d.color[1] = d.color[2] = 160;
     return vrWorld_SetObjectDef(w, id, &d, err, n);
 }
@@ -121,7 +123,8 @@ static int add_one(vrWorld *w, char *err, size_t n)
     d.size[0] = d.size[1] = d.size[2] = CUBE_HALF;
     d.mass = 1;
     d.mass_set = 1;
-    d.elasticity = 1;
+    d.elasticity = w->s.default_elasticity;    /* SPEC 7: 1 and 0 unless set before */
+    d.friction = w->s.default_friction;
     d.translate[0] = c.x; d.translate[1] = c.y; d.translate[2] = c.z;
     d.linear_vel[0] = v.x; d.linear_vel[1] = v.y; d.linear_vel[2] = v.z;
     d.angular_vel[0] = om.x; d.angular_vel[1] = om.y; d.angular_vel[2] = om.z;

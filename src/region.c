@@ -56,8 +56,25 @@ static void project(const vrPosed *b, const vrIntSet *s, vec3 t1, vec3 t2, P2 *o
 /* Step 5: the vertices of each body within d of the other's support plane,
  * projected on the plane normal to n, hulled, intersected, and lifted to the
  * plane midway between the support planes. */
+/* the surfaces' gap along n at corner q of the region (region.h) */
+static double corner_gap(const vrPosed *a, const vrPosed *b, const vrCanon *c, const vrIntSet *va, const vrIntSet *vb,
+                         vec3 t1, vec3 t2, P2 q)
+{
+    double ha = c->ha, hb = c->hb;
+    int i;
+    for (i = 0; i < va->n; i++) {
+        vec3 x = vrPosed_Vertex(a, va->v[i]);
+        if (vec3_dot(t1, x) == q.x && vec3_dot(t2, x) == q.y) ha = vr_min(ha, vec3_dot(c->n, x));
+    }
+    for (i = 0; i < vb->n; i++) {
+        vec3 x = vrPosed_Vertex(b, vb->v[i]);
+        if (vec3_dot(t1, x) == q.x && vec3_dot(t2, x) == q.y) hb = vr_max(hb, vec3_dot(c->n, x));
+    }
+    return hb - ha;
+}
+
 static int region_points(const vrPosed *a, const vrPosed *b, const vrCanon *c, const vrIntSet *va, const vrIntSet *vb,
-                         vec3 *point, int *npoints)
+                         vec3 *point, double *gap, int *npoints)
 {
     P2 stack[256], *buf = stack, *pa, *pb, *tmp, *res, *clip;
     int na, nb, m, i, n = va->n + vb->n;
@@ -71,18 +88,22 @@ static int region_points(const vrPosed *a, const vrPosed *b, const vrCanon *c, c
     na = vrP2_Hull(pa, va->n, tmp);
     nb = vrP2_Hull(pb, vb->n, tmp);
     m = reduce(res, vrP2_IntersectHulls(pa, na, pb, nb, res, clip));
-    for (i = 0; i < m; i++)
+    for (i = 0; i < m; i++) {
         point[i] = vec3_madd(vec3_add(vec3_scale(t1, res[i].x), vec3_scale(t2, res[i].y)), mid, c->n);
+        gap[i] = corner_gap(a, b, c, va, vb, t1, t2, res[i]);
+    }
     *npoints = m;
     if (m == 0) { /* tolerance corner cases */
         *npoints = 1;
         point[0] = vec3_lerp(c->qa, c->qb, 0.5);
+        gap[0] = c->dist;
     }
     if (buf != stack) free(buf);
     return 0;
 }
 
-int vrRegion_Points(const vrPosed *a, const vrPosed *b, const vrCanon *c, double d, vec3 *point, int *npoints)
+int vrRegion_Points(const vrPosed *a, const vrPosed *b, const vrCanon *c, double d, vec3 *point, double *gap,
+                    int *npoints)
 {
     vrIntSet va, vb;
     int rc;
@@ -90,7 +111,7 @@ int vrRegion_Points(const vrPosed *a, const vrPosed *b, const vrCanon *c, double
     vrIntSet_Init(&vb);
     rc = slab(b, vec3_neg(c->n), -(c->ha + d + VR_REGION_SLACK), c->sb.v.v[0], &vb)
       || slab(a, c->n, c->hb - d - VR_REGION_SLACK, c->sa.v.v[0], &va)
-      || region_points(a, b, c, &va, &vb, point, npoints);
+      || region_points(a, b, c, &va, &vb, point, gap, npoints);
     vrIntSet_Free(&va);
     vrIntSet_Free(&vb);
     return rc ? -1 : 0;

@@ -17,11 +17,14 @@ int vrRegion_Contains(const vec3 *pts, int n, vec3 nrm, vec3 q, double tol);
 double vrRegion_Margin(const vec3 *pts, int n, vec3 nrm, vec3 q);
 
 /* The region of the canonical pair c of a and b (canonical.h) within d:
- * at most VR_REGION_MAX points on the contact plane into point, their
- * number into *npoints; -1 when out of memory. */
+ * at most VR_REGION_MAX points on the contact plane into point, each
+ * one's gap along n between the surfaces into gap (a corner that is a
+ * vertex of either body: that vertex's distance from the other's support
+ * plane; a corner where the hulls' edges cross: the canonical distance,
+ * the least), their number into *npoints; -1 when out of memory. */
 struct vrPosed;
 struct vrCanon;
 int vrRegion_Points(const struct vrPosed *a, const struct vrPosed *b, const struct vrCanon *c, double d, vec3 *point,
-                    int *npoints);
+                    double *gap, int *npoints);
 
 #endif

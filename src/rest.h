@@ -1,18 +1,21 @@
-/* rest.h — the rest state (thesis 3.3.3, SPEC 3.5): what the coordinator
- * decides at frame ends and when states change. */
+/* rest.h — the rest state (thesis 3.3.3, SPEC 3.5, 7): what the coordinator
+ * decides at frame ends and when states change.  Bodies rest and wake as
+ * islands (rest.c). */
 #ifndef VROC_REST_H
 #define VROC_REST_H
 
 #include "world_state.h"
 #include "ownerset.h"
 
-/* bodies resting on a changed body wake, transitively (SPEC 3.5) */
+/* the resting bodies of the islands of the bodies up changes wake */
 int vrRest_WakeDependents(vrWorld *w, vrUpdate *up, double t);
-/* frame end: puts to rest what qualifies; fills up with the new states */
+/* the resting bodies of island (an island id, -1: none, VR_EVERY_ISLAND:
+ * all of them; what rests on a static body edited or deleted is not
+ * recorded) wake into up */
+#define VR_EVERY_ISLAND (-2)
+int vrRest_WakeIsland(vrWorld *w, int island, vrUpdate *up, double t);
+/* frame end: puts to rest the islands that qualify; fills up with the new states */
 int vrRest_FrameEnd(vrWorld *w, vrUpdate *up);
-/* frame end T: bodies carried by several contacts together become
- * supported by all of them; -1 (err) or VR_RESTART_FRAME from the owners */
-int vrRest_SeveralSupports(vrWorld *w, double T, const vrOwnerSet *owners, vrUpdate *up, char *err, size_t n);
 void vrRest_RememberFramePoses(vrWorld *w);
 
 #endif

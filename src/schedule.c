@@ -18,6 +18,7 @@ void vrSchedule_GridFor(double fastest, double ts, double T, double d, double in
     double span = T - ts;
     g->t0 = ts;
     g->T = T;
+    g->frame_T = T;
     if (span <= 0) {          /* an event at the frame end: nothing left to step */
         g->n = 0;
         g->h = 0;

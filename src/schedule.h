@@ -5,8 +5,9 @@
 
 #include "body.h"
 
-/* grid points t0 + k h, k = 1..n, the last one exactly T */
-typedef struct vrGrid { double t0, T, h; long n; } vrGrid;
+/* grid points t0 + k h, k = 1..n, the last one exactly T; frame_T is the
+ * frame's end (>= T: a span ends at the next island step, SPEC 7) */
+typedef struct vrGrid { double t0, T, h; long n; double frame_T; } vrGrid;
 
 static inline double vrGrid_Point(const vrGrid *g, long k)
 {

@@ -45,6 +45,7 @@ void vrWorld_Destroy(vrWorld *w)
     free(w->changed);
     vrUpdate_Free(&w->update);
     vrUpdate_Free(&w->pending);
+    vrTouches_Free(&w->touches);
     free(w);
 }
 
@@ -54,7 +55,7 @@ void vrWorld_Restart(vrWorld *w)
     w->t = w->t_base = 0;
     w->frames = w->frames_base = 0;
     w->subframes = 0;
-    w->collisions = 0;
+    w->collisions = w->island_steps = w->island_contacts = 0;
     w->frame_ms = w->sim_ms = w->render_ms = 0;
     memset(&w->retired, 0, sizeof w->retired);
     w->random_next = 0;
@@ -85,7 +86,13 @@ vrObjectId vrWorld_FindObject(const vrWorld *w, const char *name) { return vrTab
 
 int vrWorld_CreateObject(vrWorld *w, const char *name, vrObjectType type, vrObjectId *id, char *err, size_t n)
 {
-    return vrTable_Add(&w->table, name, type, id, err, n);
+    int k;
+    if (vrTable_Add(&w->table, name, type, &k, err, n) != 0) return -1;
+    /* SPEC 7: objects start with the defaults set before them */
+    w->table.obj[k]->def.elasticity = w->s.default_elasticity;
+    w->table.obj[k]->def.friction = w->s.default_friction;
+    if (id) *id = k;
+    return 0;
 }
 
 const char *vrWorld_ObjectName(const vrWorld *w, vrObjectId id)

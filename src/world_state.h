@@ -12,6 +12,7 @@
  *   world_state.h ownerset.h    this state; what the coordinator asks of owners
  *   rest.c, parallel/sgp.c      rest (SPEC 3.5); the workers as an owner set
  *   owners.c                    the owner choice and the serial owner set
+ *   island_step.c               the contacts of an instant, solved together (SPEC 7)
  *   start.c                     a start: objects go live, owners come to date
  *   loop.c edit.c query.c       the frame loop; live edits; the getters
  *   world.c random.c output.c   life cycle; `random`; `dump` and `stats`
@@ -53,9 +54,12 @@ struct vrWorld {
     vrUpdate update;
     int *changed;            /* scratch: ids changed by an update */
     int nchanged, changedcap;
-    /* statistics (SPEC 1.3) */
+    vrTouches touches;       /* scratch: an island step's touching pairs */
+    /* statistics (SPEC 1.3, 7) */
     long subframes;
     long long collisions;
+    long long island_steps;  /* island steps that solved an island */
+    long long island_contacts; /* contacts those steps solved */
     double frame_ms, sim_ms, render_ms;
     /* `random` */
     int random_next;

@@ -1,8 +1,10 @@
-/* test_quiet.c — the quiet proofs of quiet.c (quiet_slide, quiet_support,
- * quiet_horizon): a slide or support contact that cannot change before the
- * frame ends, or for several frames, is looked at about once a frame or
- * once in several, and the run gives the same bits as heap = 0, which
- * looks at every pair at every internal step. */
+/* test_quiet.c — contacts that have nothing to do cost little and change
+ * no bit (SPEC 7, quiet.c): bodies sliding on a table or on the floor take
+ * no event while they slide (their island steps answer their contacts),
+ * a ball sliding on a level face is not looked at between island steps
+ * (quiet.c's quiet_slide), the heap looks at far fewer pairs than heap = 0,
+ * which looks at every pair at every internal step, and gives the same
+ * bits.  Bodies start half the contact gap (1 mm) above what they lie on. */
 #include "test.h"
 #include "vroc.h"
 #include "vec.h"
@@ -22,8 +24,8 @@ static vrWorld *quiet_scene(int heap)
     if (!heap) vrScene_Set(w, vrScene_HeapOff);
     vrScene_Box(w, "table", vec3_make(1, 1, 0.05), vec3_make(0, 0, 0), -1, 1);
     vrScene_Box(w, "wall", vec3_make(0.05, 1, 3), vec3_make(5, 0, 0), -1, 1);
-    vrScene_Sphere(w, "slider", 0.1, vec3_make(0.013, 0, 0.155), vec3_make(1, 0, 0), 1, 1); /* off mid-frame */
-    vrScene_Sphere(w, "faller", 0.1, vec3_make(5 - 0.05 - 0.1 - 0.005, 0, 2.5), vec3_make(0, 0.3, 0), 1, 1);
+    vrScene_Sphere(w, "slider", 0.1, vec3_make(0.013, 0, 0.1505), vec3_make(1, 0, 0), 1, 1); /* off mid-frame */
+    vrScene_Sphere(w, "faller", 0.1, vec3_make(5 - 0.05 - 0.1 - 0.0005, 0, 2.5), vec3_make(0, 0.3, 0), 1, 1);
     spinner = vrScene_Box(w, "spinner", vec3_make(0.15, 0.15, 0.15), vec3_make(-5, 0, 5), 1, 1);
     vrScene_Edit(w, spinner, vrScene_SetSpin, spin);
     return w;
@@ -47,21 +49,19 @@ static int test_quiet_slides_cost_a_check_a_frame_and_no_bit(void)
     ENSURE(quiet_pair(quiet_scene, &a, &b));
     ENSURE(vrScene_State(a, 2).position[2] < 0.1);           /* the slider fell off the table */
     ENSURE(vrScene_Stats(a).subframes > 100);
-    ENSURE(vrScene_Stats(a).checks < 1000);   /* looked at every internal step (over 100 a frame): thousands */
+    ENSURE(vrScene_Stats(a).checks * 5 < vrScene_Stats(b).checks);   /* heap off: every pair at every step */
     vrWorld_Destroy(a);
     vrWorld_Destroy(b);
     return 0;
 }
 
 /* Boxes sliding and turning flat on a table and on the floor, while a cube
- * spinning at 30 rad/s far away makes the internal steps fine: a support
- * contact cannot change before the frame ends while the box's footprint
- * stays over the face and nothing tilts it, so with the heap it is looked
- * at about once a frame (quiet.c's quiet_support), and the run gives the same
- * bits as heap = 0.  One cube slides off the table's edge mid-frame (its
- * support ends at a grid point, it tips over the edge through contact
- * impulses and falls); a flat asymmetric box turns (the integrator's
- * rotation) as it slides on the floor. */
+ * spinning at 30 rad/s far away makes the internal steps fine: with the
+ * heap the contacts are looked at far less than at every internal step,
+ * and the run gives the same bits as heap = 0.  One cube slides off the
+ * table's edge mid-frame (it tips over the edge in its island and falls);
+ * a flat asymmetric box turns (the integrator's rotation) as it slides on
+ * the floor. */
 static vrWorld *quiet_support_scene(int heap)
 {
     vrWorld *w = vrScene_World(0.05, 0.01, 9.8);
@@ -71,10 +71,10 @@ static vrWorld *quiet_support_scene(int heap)
     if (!heap) vrScene_Set(w, vrScene_HeapOff);
     vrScene_Box(w, "table", vec3_make(1, 1, 0.05), vec3_make(0, 0, 0), -1, 1);
     vrScene_Box(w, "floor", vec3_make(4, 4, 0.05), vec3_make(0, 0, -1), -1, 1);
-    tipper = vrScene_Box(w, "tipper", vec3_make(0.1, 0.1, 0.1), vec3_make(0.43, 0.3, 0.155), 1, 1);
+    tipper = vrScene_Box(w, "tipper", vec3_make(0.1, 0.1, 0.1), vec3_make(0.43, 0.3, 0.1505), 1, 1);
     vrScene_Edit(w, tipper, vrScene_SetVelocity, v);
     vrScene_Edit(w, tipper, vrScene_SetSpin, turn);
-    plate = vrScene_Box(w, "plate", vec3_make(0.2, 0.1, 0.03), vec3_make(-2, 1, -0.95 + 0.03 + 0.004), 1, 1);
+    plate = vrScene_Box(w, "plate", vec3_make(0.2, 0.1, 0.03), vec3_make(-2, 1, -0.95 + 0.03 + 0.0005), 1, 1);
     vrScene_Edit(w, plate, vrScene_SetVelocity, slow);
     vrScene_Edit(w, plate, vrScene_SetSpin, flat_turn);
     spinner = vrScene_Box(w, "spinner", vec3_make(0.15, 0.15, 0.15), vec3_make(-3, -3, 5), 1, 1);
@@ -88,20 +88,18 @@ static int test_quiet_supports_cost_a_check_a_frame_and_no_bit(void)
     ENSURE(quiet_pair(quiet_support_scene, &a, &b));
     ENSURE(vrScene_State(a, 2).position[2] < 0);             /* the tipper fell off the table */
     ENSURE(vrScene_State(a, 3).position[2] > -0.95);         /* the plate slides on the floor */
-    ENSURE(vrScene_Stats(a).collisions > 0);                 /* the tipper's contact impulses */
+    ENSURE(vrScene_Stats(a).collisions > 0);                 /* the tipper lands on the floor */
     ENSURE(vrScene_Stats(a).subframes > 100);
-    ENSURE(vrScene_Stats(a).checks < 5000);
+    ENSURE(vrScene_Stats(a).checks * 5 < vrScene_Stats(b).checks);
     vrWorld_Destroy(a);
     vrWorld_Destroy(b);
     return 0;
 }
 
 /* A ball and a turning box sliding slowly across the middle of a big
- * table, 100 frames a second: nothing can change for many frames, so with
- * the heap each contact is proved quiet QUIET_AHEAD (0.1 s) past the
- * frame's end and looked at about once in ten frames, not at every frame's
- * start (quiet.c's quiet_horizon), and the run gives the same bits as heap =
- * 0, which looks at both at every internal step. */
+ * table, 100 frames a second: they take no event at all while they slide
+ * (SPEC 7: a resting or sliding contact costs no event per grid step), and
+ * the run gives the same bits as heap = 0. */
 static vrWorld *slow_slide_scene(int heap)
 {
     vrWorld *w = vrScene_World(0.01, 0.01, 9.8);
@@ -109,8 +107,8 @@ static vrWorld *slow_slide_scene(int heap)
     double v[3] = {0, 0.2, 0}, turn[3] = {0, 0, 1};
     if (!heap) vrScene_Set(w, vrScene_HeapOff);
     vrScene_Box(w, "table", vec3_make(2, 2, 0.05), vec3_make(0, 0, 0), -1, 1);
-    vrScene_Sphere(w, "ball", 0.1, vec3_make(-0.5, 0, 0.155), vec3_make(0.2, 0, 0), 1, 1);
-    b = vrScene_Box(w, "box", vec3_make(0.1, 0.05, 0.1), vec3_make(0.5, 0, 0.155), 1, 1);
+    vrScene_Sphere(w, "ball", 0.1, vec3_make(-0.5, 0, 0.1505), vec3_make(0.2, 0, 0), 1, 1);
+    b = vrScene_Box(w, "box", vec3_make(0.1, 0.05, 0.1), vec3_make(0.5, 0, 0.1505), 1, 1);
     vrScene_Edit(w, b, vrScene_SetVelocity, v);
     vrScene_Edit(w, b, vrScene_SetSpin, turn);
     return w;
@@ -125,7 +123,7 @@ static int test_quiet_contacts_are_looked_at_once_in_several_frames(void)
     ENSURE(vrScene_SameDumps(a, b));
     ENSURE(vrScene_State(a, 1).state == VR_STATE_SUPPORTED && vrScene_State(a, 2).state == VR_STATE_SUPPORTED);
     ENSURE(vrScene_State(a, 1).position[0] > -0.39 && vrScene_State(a, 2).position[1] > 0.11);  /* both slid on */
-    ENSURE(vrScene_Stats(a).checks < 40);     /* looked at each frame start, it would be more than 120 */
+    ENSURE(vrScene_Stats(a).collisions == 0);
     vrWorld_Destroy(a);
     vrWorld_Destroy(b);
     return 0;

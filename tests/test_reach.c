@@ -34,10 +34,7 @@ static void anchor(int i, double t, const vrFlight *f)
     b->shape.kind = sphere ? VR_SHAPE_SPHERE : VR_SHAPE_BOX;
     b->shape.radius = r;
     vrBody_SetMassProperties(b, 1, &unit, sphere ? r : 0.6 * r, r);
-    if (uni() < 0.3) {
-        b->nsupport = 1;
-        b->support[0].n = uni() < 0.5 ? vec3_make(0, 0, 1) : vec3_normalize(vec3_make(sym(0.5), sym(0.5), 1));
-    }
+    b->contact = uni() < 0.3;      /* an island's contact step: no global force */
     b->resting = uni() < 0.1;
     vrBody_Anchor(b, t, rvec(5), v, quat_identity(), vec3_scale(spin, 0.4 * r * r), f);
     ptr[i] = b;

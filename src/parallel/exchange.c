@@ -58,7 +58,7 @@ static void count_malformed(vrSgp *s) { s->malformed++; }
 static void take_earliest(vrSgp *s, const vroc_earliest_t *m)
 {
     vrGpInfo *g = sender(s, m->run, m->seq, m->gp, WAIT_EARLIEST);
-    if (g && m->found && (!isfinite(m->t) || m->kind <= VR_EV_NONE || m->kind > VR_EV_SUPPORT_BEGIN)) {
+    if (g && m->found && (!isfinite(m->t) || m->kind <= VR_EV_NONE || m->kind > VR_EV_PUSHOUT)) {
         s->malformed++;
         g = NULL;
     }
@@ -94,7 +94,7 @@ static void take_candidates(vrSgp *s, const vroc_candidates_t *m)
 {
     vrGpInfo *g = sender(s, m->run, m->seq, m->gp, WAIT_CANDIDATES);
     if (!g) return;
-    if (vrWire_GetCandidates(m, s->max_id, &s->candidates) != 0) s->malformed++;
+    if (vrWire_GetTouches(m, s->max_id, &s->touches) != 0) s->malformed++;
     else g->replied = 1;
     note_error(s, m->gp, m->error);
 }

@@ -149,6 +149,6 @@ int vrSgp_Setup(vrWorld *w, vrSgp *s, char *err, size_t n)
         break;
     }
     s->structure = w->structure;
-    s->frame_open = 0;
+    s->frame_open = s->frame_fresh = 0;
     return vrSgp_Delivered(w, s) == 0 ? 0 : (snprintf(err, n, "out of memory"), -1);
 }

@@ -38,6 +38,8 @@ static int recover(vrWorld *w, char *err, size_t n)
     for (i = 0; i < s->snap.n; i++)
         vrBody_Apply(&w->table.obj[s->snap.body[i].id]->body, &s->snap.body[i], &f);
     w->collisions = s->snap_collisions;
+    w->island_steps = s->snap_island_steps;
+    w->island_contacts = s->snap_island_contacts;
     for (i = 0; i < s->n; i++) {   /* the frame is redone: what it counted is counted again */
         s->gp[i].before = s->snap_counts[i];
         memset(&s->gp[i].now, 0, sizeof s->gp[i].now);
@@ -56,6 +58,8 @@ static void snapshot(vrWorld *w, vrSgp *s)
     for (i = 0; i < w->table.n; i++)
         if (w->table.obj[i] && w->table.obj[i]->live) vrSgp_AddAnchor(&s->snap, &w->table.obj[i]->body);
     s->snap_collisions = w->collisions;
+    s->snap_island_steps = w->island_steps;
+    s->snap_island_contacts = w->island_contacts;
     for (i = 0; i < s->n; i++) s->snap_counts[i] = vrSgp_Counts(s, i);
 }
 
@@ -133,11 +137,12 @@ static int sgp_first_event(vrWorld *w, const vrGrid *g, int allow, vrEvent *ev, 
     int r;
     s->seq++;
     s->error[0] = 0;
-    if (!s->frame_open) {
-        snapshot(w, s);
+    if (!s->frame_open || s->frame_fresh) {
+        if (!s->frame_open) snapshot(w, s);
         r = encode_frame_start(w, s, g, allow, 0, NULL, 0);
         if (r == 0) r = vrSgp_Delivered(w, s);
         s->frame_open = 1;
+        s->frame_fresh = 0;
     } else {
         r = encode_forward(w, s, g, allow);
         w->pending.n = 0;
@@ -167,7 +172,7 @@ static int sgp_respond(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, s
 static void sgp_end_frame(vrWorld *w, double T)
 {
     (void)T;
-    w->sgp->frame_open = 0;
+    w->sgp->frame_open = w->sgp->frame_fresh = 0;
     w->sgp->snap_pending.n = 0;
 }
 
@@ -184,7 +189,7 @@ static int sgp_overlapping(vrWorld *w, double tol, const int *ids, int nids, int
     vrGrid g;
     int i;
     (void)tol;                           /* workers use VR_START_OVERLAP */
-    g.t0 = g.T = w->t;
+    g.t0 = g.T = g.frame_T = w->t;
     g.h = 0;
     g.n = 0;
     for (;;) {
@@ -205,39 +210,45 @@ static int sgp_overlapping(vrWorld *w, double tol, const int *ids, int nids, int
     return s->noverlap;
 }
 
-/* frame end: ask every worker for the contacts that could carry the
- * wanted bodies (an extra round, only in frames that have such bodies) */
-static int sgp_candidates(vrWorld *w, double T, const unsigned char *want, vrCandidates *out, char *err, size_t n)
+/* an island step: ask every worker for the pairs that touch (a round at
+ * each island step; the states they need went with the last round) */
+static int sgp_touching(vrWorld *w, double t, double h, vrTouches *out, char *err, size_t n)
 {
     vrSgp *s = w->sgp;
     vroc_contacts_t m;
-    int i, k = 0, r;
+    vrWireStates ws;
+    int i, r;
+    if (!s->frame_open) {      /* the frame's first round: a restart redoes it from here */
+        snapshot(w, s);
+        s->frame_open = s->frame_fresh = 1;
+    }
     memset(&m, 0, sizeof m);
-    m.want = malloc((size_t)w->table.n * sizeof *m.want + 1);
-    if (!m.want) return snprintf(err, n, "out of memory"), -1;
-    for (i = 0; i < w->table.n; i++)
-        if (want[i]) m.want[k++] = i;
-    m.nwant = k;
+    memset(&ws, 0, sizeof ws);
+    r = vrWire_PutStates(&ws, &w->pending);
     m.run = s->run;
     m.seq = ++s->seq;
-    m.t = T;
+    m.t = t;
+    m.h = h;
+    m.nstates = ws.n;
+    m.states = ws.m;
     s->error[0] = 0;
-    s->candidates.n = 0;
-    r = VR_ENCODE(&s->req, vroc_contacts_t, &m);
-    free(m.want);
+    s->touches.n = 0;
+    if (r == 0) r = VR_ENCODE(&s->req, vroc_contacts_t, &m);
+    vrWire_FreeStates(&ws);
+    if (r == 0) r = vrSgp_Delivered(w, s);
     if (r != 0) return snprintf(err, n, "out of memory"), -1;
     s->req_channel = VR_CH_CONTACTS;
     if (vrSgp_Exchange(s, WAIT_CANDIDATES, -1)) return recover(w, err, n);
     if (s->error[0]) return snprintf(err, n, "%s", s->error), -1;
-    for (i = 0; i < s->candidates.n; i++) {
-        vrCandidate *c = vrCandidates_Add(out);
+    for (i = 0; i < s->touches.n; i++) {
+        vrTouch *c = vrTouches_Add(out);
         if (!c) return snprintf(err, n, "out of memory"), -1;
-        *c = s->candidates.c[i];
+        *c = s->touches.t[i];
     }
     return 0;
 }
 
-const vrOwnerSet vrSgp_Owners = {sgp_first_event, sgp_respond, sgp_end_frame, sgp_overlapping, sgp_candidates};
+const vrOwnerSet vrSgp_Owners = {sgp_first_event, sgp_respond, sgp_end_frame, sgp_overlapping, sgp_touching};
 
 
 void vrSgp_Stats(const vrSgp *s, vrStats *st)

@@ -48,12 +48,13 @@ struct vrSgp {
     vrBuf req;                  /* the broadcast request awaiting answers */
     const char *req_channel;
     vrUpdate reply;             /* the responder's states */
-    vrCandidates candidates;    /* frame end: what the workers found */
+    vrTouches touches;          /* an island step: what the workers found */
     int overlap[MAX_OVERLAPS][2], noverlap;
     char error[256];
     int frame_open;
+    int frame_fresh;            /* the frame opened with an island step: its frame_start not sent yet */
     vrUpdate snap, snap_pending;   /* the frame start, to redo the frame */
-    long long snap_collisions;
+    long long snap_collisions, snap_island_steps, snap_island_contacts;
     vrGpCounts snap_counts[VR_MAX_GPS];  /* each worker's counts then (before + now) */
     long long requests, received, foreign, malformed;
     lcm_subscription_t *subs[4];

@@ -125,7 +125,7 @@ void vrSgp_Free(vrSgp *s)
     vrLink_Close(&s->link);
     vrBuf_Free(&s->req);
     vrUpdate_Free(&s->reply);
-    vrCandidates_Free(&s->candidates);
+    vrTouches_Free(&s->touches);
     vrUpdate_Free(&s->snap);
     vrUpdate_Free(&s->snap_pending);
     free(s);

@@ -17,14 +17,10 @@ static vec3 get3(const double *d) { return vec3_make(d[0], d[1], d[2]); }
 
 int vrWire_PutStates(vrWireStates *w, const vrUpdate *up)
 {
-    int i, k;
+    int i;
     w->n = up->n;
     w->m = calloc((size_t)(up->n ? up->n : 1), sizeof *w->m);
-    w->partner = calloc((size_t)(up->n ? up->n : 1), sizeof *w->partner);
-    w->joint = calloc((size_t)(up->n ? up->n : 1), sizeof *w->joint);
-    w->fixed = calloc((size_t)(up->n ? up->n : 1), sizeof *w->fixed);
-    w->normal = calloc((size_t)(up->n ? up->n : 1), sizeof *w->normal);
-    if (!w->m || !w->partner || !w->joint || !w->fixed || !w->normal) return -1;
+    if (!w->m) return -1;
     for (i = 0; i < up->n; i++) {
         const vrBodyState *st = &up->body[i];
         vroc_body_state_t *m = &w->m[i];
@@ -37,18 +33,8 @@ int vrWire_PutStates(vrWireStates *w, const vrUpdate *up)
         m->raw = (int8_t)st->raw;
         m->resting = (int8_t)st->resting;
         m->hit = (int8_t)st->hit;
-        m->nsupport = st->nsupport;
-        m->nnormal = 3 * st->nsupport;
-        m->partner = w->partner[i];
-        m->joint = w->joint[i];
-        m->fixed = w->fixed[i];
-        m->normal = w->normal[i];
-        for (k = 0; k < st->nsupport; k++) {
-            w->partner[i][k] = st->support[k].partner;
-            w->joint[i][k] = st->support[k].joint;
-            w->fixed[i][k] = st->support[k].fixed;
-            put3(&w->normal[i][3 * k], st->support[k].n);
-        }
+        m->contact = (int8_t)st->contact;
+        m->island = st->island;
     }
     return 0;
 }
@@ -56,19 +42,13 @@ int vrWire_PutStates(vrWireStates *w, const vrUpdate *up)
 void vrWire_FreeStates(vrWireStates *w)
 {
     free(w->m);
-    free(w->partner);
-    free(w->joint);
-    free(w->fixed);
-    free(w->normal);
     memset(w, 0, sizeof *w);
 }
 
 static int get_state(const vroc_body_state_t *m, int max_id, vrBodyState *st)
 {
-    int k;
-    if (m->id < 0 || m->id >= max_id || m->nsupport < 0 || m->nsupport > VR_MAX_SUPPORTS
-        || m->nnormal != 3 * m->nsupport || !isfinite(m->t) || !finite_all(m->x, 3) || !finite_all(m->v, 3)
-        || !finite_all(m->L, 3) || !finite_all(m->q, 4) || !finite_all(m->normal, m->nnormal))
+    if (m->id < 0 || m->id >= max_id || m->island < -1 || m->island >= max_id || !isfinite(m->t)
+        || !finite_all(m->x, 3) || !finite_all(m->v, 3) || !finite_all(m->L, 3) || !finite_all(m->q, 4))
         return -1;
     st->id = m->id;
     st->t = m->t;
@@ -79,14 +59,8 @@ static int get_state(const vroc_body_state_t *m, int max_id, vrBodyState *st)
     st->raw = m->raw != 0;
     st->resting = m->resting != 0;
     st->hit = m->hit != 0;
-    st->nsupport = m->nsupport;
-    for (k = 0; k < m->nsupport; k++) {
-        if (m->partner[k] < 0 || m->partner[k] >= max_id) return -1;
-        st->support[k].partner = m->partner[k];
-        st->support[k].joint = m->joint[k] != 0;
-        st->support[k].fixed = m->fixed[k] != 0;
-        st->support[k].n = get3(&m->normal[3 * k]);
-    }
+    st->contact = m->contact != 0;
+    st->island = m->island;
     return 0;
 }
 
@@ -108,64 +82,73 @@ int vrWire_GetStates(const vroc_body_state_t *m, int n, int max_id, vrUpdate *up
     return 0;
 }
 
-int vrWire_PutCandidates(vroc_candidates_t *m, const vrCandidates *c)
+int vrWire_PutTouches(vroc_candidates_t *m, const vrTouches *c)
 {
     int i, k, npt = 0;
-    for (i = 0; i < c->n; i++) npt += c->c[i].npoints;
+    for (i = 0; i < c->n; i++) npt += c->t[i].npoints;
     m->n = c->n;
     m->n3 = 3 * c->n;
+    m->npt = npt;
     m->npt3 = 3 * npt;
-    m->body = malloc((size_t)(c->n + 1) * sizeof *m->body);
-    m->partner = malloc((size_t)(c->n + 1) * sizeof *m->partner);
+    m->a = malloc((size_t)(c->n + 1) * sizeof *m->a);
+    m->b = malloc((size_t)(c->n + 1) * sizeof *m->b);
     m->npoints = malloc((size_t)(c->n + 1) * sizeof *m->npoints);
+    m->dist = malloc((size_t)(c->n + 1) * sizeof *m->dist);
     m->normal = malloc((size_t)(m->n3 + 1) * sizeof *m->normal);
-    m->velocity = malloc((size_t)(m->n3 + 1) * sizeof *m->velocity);
+    m->gaps = malloc((size_t)(m->npt + 1) * sizeof *m->gaps);
     m->points = malloc((size_t)(m->npt3 + 1) * sizeof *m->points);
-    if (!m->body || !m->partner || !m->npoints || !m->normal || !m->velocity || !m->points) return -1;
+    if (!m->a || !m->b || !m->npoints || !m->dist || !m->normal || !m->gaps || !m->points) return -1;
     for (i = 0, npt = 0; i < c->n; i++) {
-        const vrCandidate *k0 = &c->c[i];
-        m->body[i] = k0->body;
-        m->partner[i] = k0->partner;
+        const vrTouch *k0 = &c->t[i];
+        m->a[i] = k0->a;
+        m->b[i] = k0->b;
         m->npoints[i] = k0->npoints;
+        m->dist[i] = k0->dist;
         put3(&m->normal[3 * i], k0->n);
-        put3(&m->velocity[3 * i], k0->partner_velocity);
-        for (k = 0; k < k0->npoints; k++, npt++) put3(&m->points[3 * npt], k0->point[k]);
+        for (k = 0; k < k0->npoints; k++, npt++) {
+            put3(&m->points[3 * npt], k0->point[k]);
+            m->gaps[npt] = k0->gap[k];
+        }
     }
     return 0;
 }
 
-void vrWire_FreeCandidates(vroc_candidates_t *m)
+void vrWire_FreeTouches(vroc_candidates_t *m)
 {
-    free(m->body);
-    free(m->partner);
+    free(m->a);
+    free(m->b);
     free(m->npoints);
+    free(m->dist);
     free(m->normal);
-    free(m->velocity);
+    free(m->gaps);
     free(m->points);
 }
 
-int vrWire_GetCandidates(const vroc_candidates_t *m, int max_id, vrCandidates *out)
+int vrWire_GetTouches(const vroc_candidates_t *m, int max_id, vrTouches *out)
 {
     int i, k, npt = 0, old = out->n;
-    if (m->n < 0 || m->n3 != 3 * m->n || !finite_all(m->normal, m->n3) || !finite_all(m->velocity, m->n3)
-        || !finite_all(m->points, m->npt3))
+    if (m->n < 0 || m->n3 != 3 * m->n || m->npt3 != 3 * m->npt || !finite_all(m->normal, m->n3)
+        || !finite_all(m->dist, m->n) || !finite_all(m->gaps, m->npt) || !finite_all(m->points, m->npt3))
         return -1;
     for (i = 0; i < m->n; i++) {
-        vrCandidate *c;
-        if (m->body[i] < 0 || m->body[i] >= max_id || m->partner[i] < 0 || m->partner[i] >= max_id
-            || m->npoints[i] < 1 || m->npoints[i] > VR_REGION_MAX || 3 * (npt + m->npoints[i]) > m->npt3
-            || !(c = vrCandidates_Add(out))) {
+        vrTouch *c;
+        if (m->a[i] < 0 || m->a[i] >= max_id || m->b[i] <= m->a[i] || m->b[i] >= max_id
+            || m->npoints[i] < 1 || m->npoints[i] > VR_TOUCH_POINTS || npt + m->npoints[i] > m->npt
+            || !(c = vrTouches_Add(out))) {
             out->n = old;
             return -1;
         }
-        c->body = m->body[i];
-        c->partner = m->partner[i];
+        c->a = m->a[i];
+        c->b = m->b[i];
         c->n = get3(&m->normal[3 * i]);
-        c->partner_velocity = get3(&m->velocity[3 * i]);
+        c->dist = m->dist[i];
         c->npoints = m->npoints[i];
-        for (k = 0; k < c->npoints; k++, npt++) c->point[k] = get3(&m->points[3 * npt]);
+        for (k = 0; k < c->npoints; k++, npt++) {
+            c->point[k] = get3(&m->points[3 * npt]);
+            c->gap[k] = m->gaps[npt];
+        }
     }
-    if (3 * npt != m->npt3) {
+    if (npt != m->npt) {
         out->n = old;
         return -1;
     }
@@ -189,6 +172,7 @@ void vrWire_PutDef(vroc_body_def_t *m, int id, const vrObjectDef *d, char *off_t
     m->mass_set = (int8_t)d->mass_set;
     m->volume = d->volume;
     m->elasticity = d->elasticity;
+    m->friction = d->friction;
     m->off = off_text ? off_text : none;
 }
 
@@ -207,6 +191,7 @@ int vrWire_GetDef(const vroc_body_def_t *m, vrObjectDef *d)
     d->mass_set = m->mass_set != 0;
     d->volume = m->volume;
     d->elasticity = m->elasticity;
+    d->friction = m->friction;
     return 0;    /* ranges are checked when the object is built */
 }
 
@@ -238,14 +223,18 @@ void vrWire_PutGrid(vroc_grid_t *m, const vrGrid *g)
     m->T = g->T;
     m->h = g->h;
     m->n = g->n;
+    m->frame_T = g->frame_T;
 }
 
 int vrWire_GetGrid(const vroc_grid_t *m, vrGrid *g)
 {
-    if (!isfinite(m->t0) || !isfinite(m->T) || !isfinite(m->h) || m->n < 0 || m->T < m->t0) return -1;
+    if (!isfinite(m->t0) || !isfinite(m->T) || !isfinite(m->h) || m->n < 0 || m->T < m->t0 || !(m->frame_T >= m->T)
+        || !isfinite(m->frame_T))
+        return -1;
     g->t0 = m->t0;
     g->T = m->T;
     g->h = m->h;
     g->n = (long)m->n;
+    g->frame_T = m->frame_T;
     return 0;
 }

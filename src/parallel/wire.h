@@ -16,10 +16,6 @@
 typedef struct vrWireStates {
     int n;
     vroc_body_state_t *m;
-    int32_t (*partner)[VR_MAX_SUPPORTS];
-    int32_t (*joint)[VR_MAX_SUPPORTS];
-    int32_t (*fixed)[VR_MAX_SUPPORTS];
-    double (*normal)[3 * VR_MAX_SUPPORTS];
 } vrWireStates;
 
 int vrWire_PutStates(vrWireStates *w, const vrUpdate *up);
@@ -28,11 +24,11 @@ void vrWire_FreeStates(vrWireStates *w);
  * any is malformed or names an id outside [0, max_id) */
 int vrWire_GetStates(const vroc_body_state_t *m, int n, int max_id, vrUpdate *up);
 
-/* support candidates (frame end): the message's arrays are allocated here */
-int vrWire_PutCandidates(vroc_candidates_t *m, const vrCandidates *c);
-void vrWire_FreeCandidates(vroc_candidates_t *m);
+/* the pairs touching at an island step: the message's arrays are allocated here */
+int vrWire_PutTouches(vroc_candidates_t *m, const vrTouches *c);
+void vrWire_FreeTouches(vroc_candidates_t *m);
 /* appends; -1 when malformed (nothing appended) */
-int vrWire_GetCandidates(const vroc_candidates_t *m, int max_id, vrCandidates *out);
+int vrWire_GetTouches(const vroc_candidates_t *m, int max_id, vrTouches *out);
 
 void vrWire_PutDef(vroc_body_def_t *m, int id, const vrObjectDef *d, char *off_text);
 int vrWire_GetDef(const vroc_body_def_t *m, vrObjectDef *d);

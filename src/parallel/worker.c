@@ -308,25 +308,18 @@ static void take_forward(vrWorker *k, const vroc_update_t *m)
     else look_ahead(k, m->seq, &m->grid, m->allow_instant);
 }
 
-/* frame end: the contacts that could carry the wanted bodies */
-static void report_candidates(vrWorker *k, const vroc_contacts_t *m)
+/* an island step: the pairs that touch */
+static void report_touches(vrWorker *k, const vroc_contacts_t *m)
 {
-    vrCandidates list = {0, 0, NULL};
+    vrTouches list = {0, 0, NULL};
     vroc_candidates_t r;
-    int maxid = 0, i;
-    unsigned char *want;
-    for (i = 0; i < m->nwant; i++)
-        if (m->want[i] >= maxid) maxid = m->want[i] + 1;
-    want = calloc((size_t)maxid + 1, 1);
     memset(&r, 0, sizeof r);
-    for (i = 0; want && i < m->nwant; i++)
-        if (m->want[i] >= 0) want[m->want[i]] = 1;
     r.run = k->run;
     r.seq = m->seq;
     r.gp = k->gp;
     r.error = "";
-    if (!want || vrOwner_SupportCandidates(k->owner, m->t, want, maxid, &list) != 0 || vrWire_PutCandidates(&r, &list) != 0) {
-        vrWire_FreeCandidates(&r);
+    if (vrOwner_Touching(k->owner, m->t, m->h, &list) != 0 || vrWire_PutTouches(&r, &list) != 0) {
+        vrWire_FreeTouches(&r);
         memset(&r, 0, sizeof r);
         r.run = k->run;
         r.seq = m->seq;
@@ -334,16 +327,22 @@ static void report_candidates(vrWorker *k, const vroc_contacts_t *m)
         r.error = "out of memory";
     }
     if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) answer(k, VR_CH_CANDIDATES, m->seq);
-    vrWire_FreeCandidates(&r);
-    vrCandidates_Free(&list);
-    free(want);
+    vrWire_FreeTouches(&r);
+    vrTouches_Free(&list);
 }
 
 static void take_contacts(vrWorker *k, const vroc_contacts_t *m)
 {
-    if (!k->owner || !fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
+    if (!k->owner || !fresh(k, m->run, m->seq) || !isfinite(m->t) || !(m->h >= 0)) return;
     vrOwner_Advance(k->owner, m->t);
-    report_candidates(k, m);
+    if (apply_states(k, m->states, m->nstates) != 0) {
+        vroc_candidates_t r;
+        memset(&r, 0, sizeof r);
+        r.run = k->run, r.seq = m->seq, r.gp = k->gp, r.error = "bad body state";
+        if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) answer(k, VR_CH_CANDIDATES, m->seq);
+        return;
+    }
+    report_touches(k, m);
 }
 
 static void take_shutdown(vrWorker *k, const vroc_shutdown_t *m)

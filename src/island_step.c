@@ -1,0 +1,291 @@
+/* island_step.c — the island step (SPEC 7): at the start of each contact
+ * step, the contacts of that instant are solved together.
+ *
+ * The owners report every pair touching at t (within twice the contact
+ * gap g_c); the pairs join their moving bodies into islands (static bodies
+ * join nothing: two boxes on one floor are two islands); each island's
+ * impulses are found together by island.c with the step's gravity already
+ * in the velocities, and its bodies fly the step without the global force
+ * (semi-implicit Euler, which never gains energy with inelastic contact),
+ * straight on to the next island step.  A point's gap may close to g_c
+ * within the step and no further (its floor), so bodies come to rest g_c
+ * apart, with no push-out and no event per internal step.  A resting body
+ * touched by a moving one wakes and joins its island.  Impacts that bounce
+ * stay events of their own (SPEC 3.1): islands have restitution 0.
+ *
+ * Everything here is a function of the states at t and of the touching
+ * pairs sorted by pair order, so serial and parallel runs, and heap on and
+ * off, give the same bits.
+ *   by_pair             the touching pairs' order
+ *   root, join          union-find over body ids
+ *   Island, add_body    one island's bodies and contacts for the solve
+ *   island_body         a body as island.c needs it
+ *   solve_one           an island solved, its bodies' new states
+ *   leave_contact       bodies no longer touching fly under the force again
+ *   vrIsland_Step
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "island_step.h"
+#include "island.h"
+#include "config.h"
+#include "ownerset.h"
+#include "owners.h"
+
+#define SWEEPS 64          /* Gauss-Seidel sweeps at most (island.c) */
+#define SWEEP_TOL 1e-7     /* m/s: a sweep that changes no impulse more than this ends them */
+
+static int by_pair(const void *x, const void *y)
+{
+    const vrTouch *a = x, *b = y;
+    if (a->a != b->a) return a->a < b->a ? -1 : 1;
+    return a->b < b->b ? -1 : a->b > b->b;
+}
+
+static int root(int *parent, int i)
+{
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+}
+
+/* the lower id stays the root: an island's id is its lowest body id */
+static void join(int *parent, int a, int b)
+{
+    a = root(parent, a), b = root(parent, b);
+    if (a < b) parent[b] = a;
+    else if (b < a) parent[a] = b;
+}
+
+static int moving(const vrWorld *w, int id) { return !w->table.obj[id]->body.is_static; }
+
+/* one island's solve: its bodies (object ids, in id order; statics too)
+ * and its contacts */
+typedef struct Island {
+    int n, cap, nc, ccap;
+    int *id;
+    vrIslandBody *body;
+    vrIslandContact *c;
+} Island;
+
+static int add_body(Island *is, int id)
+{
+    int i;
+    for (i = 0; i < is->n; i++)
+        if (is->id[i] == id) return i;
+    if (is->n == is->cap) {
+        int cap = is->cap ? 2 * is->cap : 16;
+        int *ids = realloc(is->id, (size_t)cap * sizeof *ids);
+        vrIslandBody *b = ids ? realloc(is->body, (size_t)cap * sizeof *b) : NULL;
+        if (ids) is->id = ids;
+        if (!b) return -1;
+        is->body = b, is->cap = cap;
+    }
+    is->id[is->n] = id;
+    return is->n++;
+}
+
+/* body id at t as island.c sees it: a moving one with the step's gravity
+ * g h in its velocity */
+static void island_body(vrWorld *w, int id, double t, vec3 gh, vrIslandBody *out)
+{
+    vrBody *b = &w->table.obj[id]->body;
+    vrPose pose;
+    memset(out, 0, sizeof *out);
+    vrBody_Pose(b, t, &pose);
+    out->x = pose.p;
+    out->dynamic = !b->is_static;
+    out->inv_inertia = b->is_static ? mat33_zero() : vrBody_InvInertiaWorld(b, &pose);
+    out->inv_mass = b->inv_mass;
+    if (!out->dynamic) return;
+    vrBody_Velocity(b, t, &out->v);
+    out->v = vec3_add(out->v, gh);
+    out->w = vrBody_Omega(b, &pose);
+}
+
+static int add_contact(Island *is, const vrTouch *k, int ia, int ib, double mu)
+{
+    vrIslandContact *c;
+    int i;
+    if (is->nc == is->ccap) {
+        int cap = is->ccap ? 2 * is->ccap : 16;
+        vrIslandContact *m = realloc(is->c, (size_t)cap * sizeof *m);
+        if (!m) return -1;
+        is->c = m, is->ccap = cap;
+    }
+    c = &is->c[is->nc++];
+    memset(c, 0, sizeof *c);
+    c->a = ia, c->b = ib, c->n = k->n, c->mu = mu, c->npoints = k->npoints;
+    for (i = 0; i < k->npoints; i++) c->p[i] = k->point[i];
+    return 0;
+}
+
+/* A point may close its gap to g_c within the step and no further (its
+ * floor: a speculative contact).  One that comes in faster than that and
+ * than v_rest besides is an impact within the step: it bounces, with the
+ * pair's restitution, as SPEC 3.1 bounces a free impact (the velocities
+ * before the step's gravity are what came in).  At an instant (h = 0) a
+ * point is held only where it touches (within g_c). */
+#define APART (-1e30)   /* the floor of a point that no contact of the instant holds */
+
+static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrIslandContact *c, double gc, double h,
+                       double v_rest, vec3 gh)
+{
+    const vrIslandBody *A = &is->body[c->a], *B = &is->body[c->b];
+    double e = fmin(w->table.obj[k->a]->body.elasticity, w->table.obj[k->b]->body.elasticity);
+    double lift = vec3_dot(c->n, vec3_sub(B->dynamic ? gh : vec3_zero(), A->dynamic ? gh : vec3_zero()));
+    int i;
+    for (i = 0; i < c->npoints; i++) {
+        vec3 ua = vec3_add(A->v, vec3_cross(A->w, vec3_sub(c->p[i], A->x)));
+        vec3 ub = vec3_add(B->v, vec3_cross(B->w, vec3_sub(c->p[i], B->x)));
+        double u = vec3_dot(c->n, vec3_sub(ub, ua)) - lift;
+        double allow = h > 0 ? vr_max(0, k->gap[i] - gc) / h : k->gap[i] > gc ? -APART : 0;
+        c->floor[i] = u < -(v_rest + allow) ? -e * u : -allow;
+    }
+}
+
+/* the island of root r: its contacts (touches[first..] whose moving body
+ * is in it), solved; its moving bodies' states into up */
+static int solve_one(vrWorld *w, Island *is, const int *parent, int r, double t, double h, vrUpdate *up)
+{
+    int instant = h == 0;
+    vrParams p = vrSettings_Params(&w->s);
+    vec3 gh = vec3_scale(p.flight.accel, h);
+    double gc = vrParams_Gap(&p), v_rest = sqrt(2.0 * vec3_len(p.flight.accel) * gc);
+    int i, k, nc;
+    is->n = is->nc = 0;
+    for (k = 0; k < w->touches.n; k++) {
+        const vrTouch *c = &w->touches.t[k];
+        int x = moving(w, c->a) ? c->a : c->b, ia, ib;
+        double mu;
+        if (root((int *)parent, x) != r) continue;
+        ia = add_body(is, c->a);
+        ib = add_body(is, c->b);
+        if (ia < 0 || ib < 0) return -1;
+        mu = sqrt(w->table.obj[c->a]->body.friction * w->table.obj[c->b]->body.friction);
+        if (add_contact(is, c, ia, ib, mu) != 0) return -1;
+    }
+    for (i = 0; i < is->n; i++) island_body(w, is->id[i], t, gh, &is->body[i]);
+    for (k = 0, nc = 0; k < w->touches.n; k++) {
+        const vrTouch *c = &w->touches.t[k];
+        if (root((int *)parent, moving(w, c->a) ? c->a : c->b) == r) set_floors(w, is, c, &is->c[nc++], gc, h, v_rest, gh);
+    }
+    if (vrIsland_Solve(is->body, is->n, is->c, is->nc, SWEEPS, SWEEP_TOL, NULL) != 0) return -1;
+    if (instant) w->collisions += is->nc;      /* contacts answered (SPEC 7) */
+    else w->island_steps++, w->island_contacts += is->nc;
+    for (i = 0; i < is->n; i++) {
+        vrBody *b = &w->table.obj[is->id[i]]->body;
+        vrBodyState *st;
+        vrPose pose;
+        mat33 inertia;
+        if (b->is_static) continue;
+        if (!(st = vrUpdate_Body(up, b, t))) return -1;
+        pose = vrPose_make(st->x, st->q);
+        inertia = vrBody_InertiaWorld(b, &pose);
+        st->v = is->body[i].v;
+        st->L = mat33_mulv(&inertia, is->body[i].w);
+        st->resting = 0;
+        if (instant) {          /* an answer to a response: flight as it was */
+            st->hit = 1;
+            continue;
+        }
+        st->contact = 1;
+        st->island = r;
+    }
+    return 0;
+}
+
+/* a body that flew the last step in contact and touches nothing now
+ * flies under the force again from t (its gravity was paid up to t) */
+static int leave_contact(vrWorld *w, const int *in_island, double t, vrUpdate *up)
+{
+    int i;
+    for (i = 0; i < w->table.n; i++) {
+        vrObject *o = w->table.obj[i];
+        vrBodyState *st;
+        if (!o || !o->live || !o->body.contact || o->body.resting || in_island[i]) continue;
+        if (!(st = vrUpdate_Body(up, &o->body, t))) return -1;
+        st->contact = 0;
+        st->island = -1;
+    }
+    return 0;
+}
+
+static int step(vrWorld *w, int *parent, int *in_island, double t, double h, vrUpdate *up)
+{
+    Island is;
+    int i, k, rc = 0;
+    memset(&is, 0, sizeof is);
+    for (i = 0; i < w->table.n; i++) parent[i] = i, in_island[i] = 0;
+    for (k = 0; k < w->touches.n; k++) {
+        const vrTouch *c = &w->touches.t[k];
+        if (moving(w, c->a) && moving(w, c->b)) join(parent, c->a, c->b);
+        in_island[c->a] |= moving(w, c->a);
+        in_island[c->b] |= moving(w, c->b);
+    }
+    for (i = 0; i < w->table.n && rc == 0; i++)
+        if (in_island[i] && root(parent, i) == i) rc = solve_one(w, &is, parent, i, t, h, up);
+    if (rc == 0) rc = leave_contact(w, in_island, t, up);
+    free(is.id);
+    free(is.body);
+    free(is.c);
+    return rc;
+}
+
+/* the touching pairs at t, sorted by pair (h = 0: an instant's) */
+static int gather(vrWorld *w, double t, double h, char *err, size_t n)
+{
+    int r;
+    w->touches.n = 0;
+    r = vrOwners_Of(w)->touching(w, t, h, &w->touches, err, n);
+    if (r == 0) qsort(w->touches.t, (size_t)w->touches.n, sizeof *w->touches.t, by_pair);
+    return r;
+}
+
+/* the islands of a and b at an instant, solved */
+static int instant(vrWorld *w, int *parent, int *in_island, double t, int a, int b, vrUpdate *up)
+{
+    Island is;
+    int k, ra, rb, rc = 0;
+    memset(&is, 0, sizeof is);
+    for (k = 0; k < w->table.n; k++) parent[k] = k, in_island[k] = 0;
+    for (k = 0; k < w->touches.n; k++) {
+        const vrTouch *c = &w->touches.t[k];
+        if (moving(w, c->a) && moving(w, c->b)) join(parent, c->a, c->b);
+    }
+    ra = moving(w, a) ? root(parent, a) : -1;
+    rb = moving(w, b) ? root(parent, b) : -1;
+    if (ra >= 0) rc = solve_one(w, &is, parent, ra, t, 0, up);
+    if (rc == 0 && rb >= 0 && rb != ra) rc = solve_one(w, &is, parent, rb, t, 0, up);
+    free(is.id);
+    free(is.body);
+    free(is.c);
+    return rc;
+}
+
+int vrIsland_Instant(vrWorld *w, double t, int a, int b, char *err, size_t n)
+{
+    int *parent, *in_island, r = gather(w, t, 0, err, n);
+    if (r != 0) return r;
+    parent = malloc(((size_t)w->table.n + 1) * sizeof *parent);
+    in_island = malloc(((size_t)w->table.n + 1) * sizeof *in_island);
+    w->update.n = 0;
+    r = parent && in_island ? instant(w, parent, in_island, t, a, b, &w->update) : -1;
+    free(parent);
+    free(in_island);
+    if (r != 0 || vrWorld_ApplyUpdate(w, &w->update) != 0) return vrGeom_Fail(err, n, "out of memory or a bad island");
+    return 0;
+}
+
+int vrIsland_Step(vrWorld *w, double t, double h, char *err, size_t n)
+{
+    int *parent, *in_island, r = gather(w, t, h, err, n);
+    if (r != 0) return r;
+    parent = malloc(((size_t)w->table.n + 1) * sizeof *parent);
+    in_island = malloc(((size_t)w->table.n + 1) * sizeof *in_island);
+    w->update.n = 0;
+    r = parent && in_island ? step(w, parent, in_island, t, h, &w->update) : -1;
+    free(parent);
+    free(in_island);
+    if (r != 0 || vrWorld_ApplyUpdate(w, &w->update) != 0) return vrGeom_Fail(err, n, "out of memory or a bad island");
+    return 0;
+}

@@ -1,0 +1,16 @@
+/* lcp.h — a small linear complementarity problem solved exactly (lcp.c):
+ * find x >= 0 with w = A x + q >= 0 and x.w = 0, for a symmetric positive
+ * semi-definite A of at most VR_LCP_MAX rows (the normal impulses of one
+ * contact's points, island.c). */
+#ifndef VR_LCP_H
+#define VR_LCP_H
+
+#define VR_LCP_MAX 8
+
+/* A is n x n, row major; x gets the answer.  A is regularised by a
+ * relative 1e-12 on its diagonal (the points of a face are redundant: A
+ * is singular).  0, or -1 when the pivoting did not end (then x is the
+ * last basis's, clamped to >= 0). */
+int vrLcp_Solve(const double *A, const double *q, int n, double *x);
+
+#endif
