@@ -124,7 +124,7 @@ static int add_contact(Island *is, const vrTouch *k, int ia, int ib, double mu)
  * than v_rest besides is an impact within the step: it bounces, with the
  * pair's restitution, as SPEC 3.1 bounces a free impact (the velocities
  * before the step's gravity are what came in).  At an instant (h = 0) a
- * point is held only where it touches (within g_c). */
+ * point is held only where it touches (within g_c, as vrPair_Near). */
 #define APART (-1e30)   /* the floor of a point that no contact of the instant holds */
 
 static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrIslandContact *c, double gc, double h,
@@ -138,7 +138,7 @@ static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrI
         vec3 ua = vec3_add(A->v, vec3_cross(A->w, vec3_sub(c->p[i], A->x)));
         vec3 ub = vec3_add(B->v, vec3_cross(B->w, vec3_sub(c->p[i], B->x)));
         double u = vec3_dot(c->n, vec3_sub(ub, ua)) - lift;
-        double allow = h > 0 ? vr_max(0, k->gap[i] - gc) / h : k->gap[i] > gc ? -APART : 0;
+        double allow = h > 0 ? vr_max(0, k->gap[i] - gc) / h : k->gap[i] > gc + VR_PENETRATION_TOL ? -APART : 0;
         c->floor[i] = u < -(v_rest + allow) ? -e * u : -allow;
     }
 }

@@ -221,6 +221,7 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     if (!(g->frame_T == o->bp.T)) vrOwner_NewFrame(o, g);
     o->bp.t0 = g->t0;
     o->span_end = g->T;
+    o->closed_t = allow_instant ? NAN : g->t0;
     span_start(o, g->t0, allow_instant);
     if (o->nfound) return take_first(o, g->t0, ev);
     while (k <= g->n) {

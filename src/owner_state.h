@@ -67,6 +67,7 @@ struct vrOwner {
     double gc, region;        /* vrParams_Gap, vrParams_RegionLevel */
     double gather_t, gather_h; /* the last island step's time and length (vrOwner_Touching) */
     double span_end;          /* the end of the span being looked through: the next island step */
+    double closed_t;          /* an instant that had its VR_INSTANT_MAX: no event there (NAN: none) */
     double v_rest;            /* sqrt(2 |a| g_c), SPEC 3.1, 7 */
     vrBody **body;            /* by id, NULL when not held */
     vrIntList *body_pairs;    /* by id: indices of its pairs */

@@ -116,6 +116,7 @@ static int impulse_at(vrOwner *o, vrEvent *ev, vrPair *p, double tau, int kind, 
     vrPose pa, pb;
     vrContact c;
     vrApproach ap;
+    if (tau == o->closed_t) return 0;   /* a bisection that lands on a closed instant */
     vrPair_EventQuery(o, p, tau, &pa, &pb, &c);
     if (c.npoints == 0 || c.dist < -deeper) return 0;
     approach(o, p, tau, &pa, &pb, &c, &ap);
@@ -220,7 +221,8 @@ int vrOwner_Touching(vrOwner *o, double t, double h, vrTouches *out)
         int pi = !o->p.use_heap ? i : i < o->active.n ? o->active.v[i] : o->flagged.v[i - o->active.n];
         vrPair *p = &o->pair[pi];
         vec3 dir;
-        if (!(p->inside || p->flagged) || !p->scheduled || (p->inside && p->flagged && i >= o->active.n)) continue;
+        if (!(p->inside || p->flagged) || !p->scheduled) continue;
+        if (o->p.use_heap && i >= o->active.n && p->inside) continue;   /* listed as active already */
         if (!p->inside && vrPair_SphereGap(o, p, t, &dir) > o->region) continue;   /* far apart: no query */
         if (touch_of(o, p, t, h, out) != 0) return -1;
     }
