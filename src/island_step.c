@@ -237,7 +237,7 @@ static int gather(vrWorld *w, double t, double h, char *err, size_t n)
     int r;
     w->touches.n = 0;
     r = vrOwners_Of(w)->touching(w, t, h, &w->touches, err, n);
-    if (r == 0) qsort(w->touches.t, (size_t)w->touches.n, sizeof *w->touches.t, by_pair);
+    if (r == 0 && w->touches.n > 1) qsort(w->touches.t, (size_t)w->touches.n, sizeof *w->touches.t, by_pair);
     return r;
 }
 
