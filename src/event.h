@@ -58,6 +58,8 @@ typedef struct vrTouch {
     int npoints;
     vec3 point[VR_TOUCH_POINTS];
     double gap[VR_TOUCH_POINTS];
+    int leaving;               /* 1: every point separates, in no island; -1: the island step's
+                                * solve turned it back (island_step.c) */
 } vrTouch;
 
 typedef struct vrTouches { int n, cap; vrTouch *t; } vrTouches;

@@ -117,6 +117,7 @@ typedef struct Solve {
     vrIslandContact *c;
     Point *pt;                /* VR_ISLAND_POINTS per contact */
     Patch *patch;             /* one per contact */
+    double *m;                /* per contact: its points' normal block, VR_LCP_MAX^2 (block_normal_step) */
     int ncontact;
     int frictionless;         /* the energy check's second try */
 } Solve;
@@ -142,6 +143,21 @@ static double normal_step(Solve *s, int ci, int i, int hold_a, int hold_b)
     return fabs(now - was) * pt->kn;
 }
 
+/* the normal block of the contact's points: M[i][j], the normal velocity
+ * at point i per unit normal impulse at point j (the bodies not held) */
+static void normal_block(const vrIslandBody *A, const vrIslandBody *B, const vrIslandContact *c, const Point *pts,
+                         int hold_a, int hold_b, double *M)
+{
+    vec3 ja[VR_LCP_MAX], jb[VR_LCP_MAX];
+    int n = c->npoints, i, j, fa = A->dynamic && !hold_a, fb = B->dynamic && !hold_b;
+    for (i = 0; i < n; i++) ja[i] = vec3_cross(pts[i].ra, c->n), jb[i] = vec3_cross(pts[i].rb, c->n);
+    for (i = 0; i < n; i++) {
+        vec3 ia = fa ? mat33_mulv(&A->inv_inertia, ja[i]) : vec3_zero(), ib = fb ? mat33_mulv(&B->inv_inertia, jb[i]) : vec3_zero();
+        for (j = 0; j < n; j++)
+            M[i * n + j] = (fa ? A->inv_mass : 0) + (fb ? B->inv_mass : 0) + vec3_dot(ia, ja[j]) + vec3_dot(ib, jb[j]);
+    }
+}
+
 /* The contact's points' normal impulses at once, exactly: the small LCP
  * of their normal velocities (lcp.c); Gauss-Seidel point by point, the
  * face's rotation coupling its points, took hundreds of sweeps on a box
@@ -151,28 +167,18 @@ static double block_normal_step(Solve *s, int ci, int hold_a, int hold_b)
 {
     vrIslandContact *c = &s->c[ci];
     vrIslandBody *A = &s->body[c->a], *B = &s->body[c->b];
-    double M[VR_LCP_MAX * VR_LCP_MAX] = {0}, q[VR_LCP_MAX] = {0}, x[VR_LCP_MAX], most = 0;
-    vec3 ja[VR_LCP_MAX], jb[VR_LCP_MAX];
+    const double *M = &s->m[ci * VR_LCP_MAX * VR_LCP_MAX];
+    double q[VR_LCP_MAX] = {0}, x[VR_LCP_MAX] = {0}, most = 0;
     int n = c->npoints, i, j, fa = A->dynamic && !hold_a, fb = B->dynamic && !hold_b;
     if (n == 1 || (!fa && !fb)) {
         for (i = 0; i < n; i++) most = vr_max(most, normal_step(s, ci, i, hold_a, hold_b));
         return most;
     }
     for (i = 0; i < n; i++) {
-        const Point *pt = point_of(s, ci, i);
-        ja[i] = vec3_cross(pt->ra, c->n), jb[i] = vec3_cross(pt->rb, c->n);
-    }
-    for (i = 0; i < n; i++) {
-        const Point *pt = point_of(s, ci, i);
         double k = 0;
-        for (j = 0; j < n; j++) {
-            double m = (fa ? A->inv_mass : 0) + (fb ? B->inv_mass : 0);
-            if (fa) m += vec3_dot(ja[i], mat33_mulv(&A->inv_inertia, ja[j]));
-            if (fb) m += vec3_dot(jb[i], mat33_mulv(&B->inv_inertia, jb[j]));
-            M[i * n + j] = m;
-            k += m * c->lambda[j];
-        }
-        q[i] = vec3_dot(c->n, relative_velocity(A, B, pt)) - c->floor[i] - k;
+        for (j = 0; j < n; j++) k += M[i * n + j] * c->lambda[j];
+        q[i] = vec3_dot(c->n, relative_velocity(A, B, point_of(s, ci, i))) - c->floor[i] - k;
+        x[i] = c->lambda[i];
     }
     vrLcp_Solve(M, q, n, x);
     for (i = 0; i < n; i++) {
@@ -305,6 +311,20 @@ static void hold(Solve *s, int ci, int hold_a, int hold_b)
     int i;
     for (i = 0; i < c->npoints; i++) prepare_point(A, B, c->n, c->p[i], hold_a, hold_b, point_of(s, ci, i));
     prepare_patch(A, B, c, hold_a, hold_b, &s->patch[ci]);
+    normal_block(A, B, c, point_of(s, ci, 0), hold_a, hold_b, &s->m[ci * VR_LCP_MAX * VR_LCP_MAX]);
+}
+
+/* a contact's impulses so far applied to its bodies (a warm start) */
+static void apply_impulses(Solve *s, int ci)
+{
+    vrIslandContact *c = &s->c[ci];
+    vrIslandBody *A = &s->body[c->a], *B = &s->body[c->b];
+    vec3 dw = vec3_scale(c->n, c->twist);
+    int i;
+    for (i = 0; i < c->npoints; i++) push(A, B, point_of(s, ci, i), vec3_scale(c->n, c->lambda[i]), 0, 0);
+    push(A, B, &s->patch[ci].at, c->friction, 0, 0);
+    if (B->dynamic) B->w = vec3_add(B->w, mat33_mulv(&B->inv_inertia, dw));
+    if (A->dynamic) A->w = vec3_sub(A->w, mat33_mulv(&A->inv_inertia, dw));
 }
 
 /* From the ground up: level by level, the contacts that settle the bodies
@@ -360,17 +380,23 @@ static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact
     if (ncontact == 0) return 0;
     s.pt = malloc((size_t)ncontact * VR_ISLAND_POINTS * sizeof *s.pt);
     s.patch = malloc((size_t)ncontact * sizeof *s.patch);
-    if (!s.pt || !s.patch) {
+    s.m = malloc((size_t)ncontact * VR_LCP_MAX * VR_LCP_MAX * sizeof *s.m);
+    if (!s.pt || !s.patch || !s.m) {
         free(s.pt);
         free(s.patch);
+        free(s.m);
         return -1;
     }
     s.body = body, s.c = c, s.ncontact = ncontact, s.frictionless = frictionless;
     for (ci = 0; ci < ncontact; ci++) {
+        hold(&s, ci, 0, 0);
+        if (c[ci].warm && !frictionless) {
+            apply_impulses(&s, ci);
+            continue;
+        }
         for (i = 0; i < c[ci].npoints; i++) c[ci].lambda[i] = 0;
         c[ci].friction = vec3_zero();
         c[ci].twist = 0;
-        hold(&s, ci, 0, 0);
     }
     for (k = 0; k < sweeps; k++) {
         st->sweeps++;
@@ -383,6 +409,7 @@ static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact
     st->residual = residual(&s);
     free(s.pt);
     free(s.patch);
+    free(s.m);
     return 0;
 }
 

@@ -15,8 +15,9 @@
  * normal likewise within that times the patch's mean radius.
  *
  * Solved by projected Gauss-Seidel in a fixed order (contacts as given,
- * points in order), so the same island gives the same bits in every
- * process; then, when the island rests on static bodies, one pass from the
+ * points in order), from the impulses given where a contact is warm (the
+ * last step's, as Box2D and Bullet start) and from none elsewhere, so the
+ * same island gives the same bits in every process; then, when the island rests on static bodies, one pass from the
  * ground up in which each contact's lower body is held still (shock
  * propagation, Guendelman, Bridson and Fedkiw 2003), so that whatever the
  * mass ratios no contact of a stack is left approaching.  Each step of
@@ -45,6 +46,7 @@ typedef struct vrIslandContact {
     int npoints;              /* 1..VR_ISLAND_POINTS */
     vec3 p[VR_ISLAND_POINTS];           /* world points */
     double floor[VR_ISLAND_POINTS];     /* lowest relative normal velocity allowed */
+    int warm;                 /* in: 1 when lambda, friction and twist hold a guess to start from */
     double lambda[VR_ISLAND_POINTS];    /* out: normal impulses on b (on a: minus) */
     vec3 friction;            /* out: tangential impulse on b at the points' centroid */
     double twist;             /* out: angular impulse on b about n (friction against turning) */

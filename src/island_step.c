@@ -33,7 +33,7 @@
 #include "owners.h"
 
 #define SWEEPS 64          /* Gauss-Seidel sweeps at most (island.c) */
-#define SWEEP_TOL 1e-7     /* m/s: a sweep that changes no impulse more than this ends them */
+#define SWEEP_TOL 1e-8     /* m/s: a sweep that changes no impulse more than this ends them */
 
 static int by_pair(const void *x, const void *y)
 {
@@ -124,7 +124,9 @@ static int add_contact(Island *is, const vrTouch *k, int ia, int ib, double mu)
  * than v_rest besides is an impact within the step: it bounces, with the
  * pair's restitution, as SPEC 3.1 bounces a free impact (the velocities
  * before the step's gravity are what came in).  At an instant (h = 0) a
- * point is held only where it touches (within g_c, as vrPair_Near). */
+ * point is held only where it touches (within g_c, as vrPair_Near).  A
+ * pair the solve turned back toward each other is held where it is: for
+ * the owners it is no island's, and any approach is an event. */
 #define APART (-1e30)   /* the floor of a point that no contact of the instant holds */
 
 static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrIslandContact *c, double gc, double h,
@@ -138,7 +140,8 @@ static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrI
         vec3 ua = vec3_add(A->v, vec3_cross(A->w, vec3_sub(c->p[i], A->x)));
         vec3 ub = vec3_add(B->v, vec3_cross(B->w, vec3_sub(c->p[i], B->x)));
         double u = vec3_dot(c->n, vec3_sub(ub, ua)) - lift;
-        double allow = h > 0 ? vr_max(0, k->gap[i] - gc) / h : k->gap[i] > gc + VR_PENETRATION_TOL ? -APART : 0;
+        double allow = k->leaving < 0 ? 0
+                     : h > 0 ? vr_max(0, k->gap[i] - gc) / h : k->gap[i] > gc + VR_PENETRATION_TOL ? -APART : 0;
         c->floor[i] = u < -(v_rest + allow) ? -e * u : -allow;
     }
 }
@@ -157,7 +160,7 @@ static int solve_one(vrWorld *w, Island *is, const int *parent, int r, double t,
         const vrTouch *c = &w->touches.t[k];
         int x = moving(w, c->a) ? c->a : c->b, ia, ib;
         double mu;
-        if (root((int *)parent, x) != r) continue;
+        if (c->leaving > 0 || root((int *)parent, x) != r) continue;
         ia = add_body(is, c->a);
         ib = add_body(is, c->b);
         if (ia < 0 || ib < 0) return -1;
@@ -167,11 +170,16 @@ static int solve_one(vrWorld *w, Island *is, const int *parent, int r, double t,
     for (i = 0; i < is->n; i++) island_body(w, is->id[i], t, gh, &is->body[i]);
     for (k = 0, nc = 0; k < w->touches.n; k++) {
         const vrTouch *c = &w->touches.t[k];
-        if (root((int *)parent, moving(w, c->a) ? c->a : c->b) == r) set_floors(w, is, c, &is->c[nc++], gc, h, v_rest, gh);
+        if (c->leaving > 0 || root((int *)parent, moving(w, c->a) ? c->a : c->b) != r) continue;
+        set_floors(w, is, c, &is->c[nc], gc, h, v_rest, gh);
+        if (!instant && w->warm.structure == w->structure) vrWarm_Start(&w->warm, c->a, c->b, h, gc, &is->c[nc]);
+        nc++;
     }
     if (vrIsland_Solve(is->body, is->n, is->c, is->nc, SWEEPS, SWEEP_TOL, NULL) != 0) return -1;
     if (instant) w->collisions += is->nc;      /* contacts answered (SPEC 7) */
     else w->island_steps++, w->island_contacts += is->nc;
+    for (k = 0; k < is->nc && !instant; k++)
+        if (vrWarm_Keep(&w->warm_next, is->id[is->c[k].a], is->id[is->c[k].b], h, &is->c[k]) != 0) return -1;
     for (i = 0; i < is->n; i++) {
         vrBody *b = &w->table.obj[is->id[i]]->body;
         vrBodyState *st;
@@ -218,6 +226,7 @@ static int step(vrWorld *w, int *parent, int *in_island, double t, double h, vrU
     for (i = 0; i < w->table.n; i++) parent[i] = i, in_island[i] = 0;
     for (k = 0; k < w->touches.n; k++) {
         const vrTouch *c = &w->touches.t[k];
+        if (c->leaving > 0) continue;
         if (moving(w, c->a) && moving(w, c->b)) join(parent, c->a, c->b);
         in_island[c->a] |= moving(w, c->a);
         in_island[c->b] |= moving(w, c->b);
@@ -250,7 +259,7 @@ static int instant(vrWorld *w, int *parent, int *in_island, double t, int a, int
     for (k = 0; k < w->table.n; k++) parent[k] = k, in_island[k] = 0;
     for (k = 0; k < w->touches.n; k++) {
         const vrTouch *c = &w->touches.t[k];
-        if (moving(w, c->a) && moving(w, c->b)) join(parent, c->a, c->b);
+        if (c->leaving <= 0 && moving(w, c->a) && moving(w, c->b)) join(parent, c->a, c->b);
     }
     ra = moving(w, a) ? root(parent, a) : -1;
     rb = moving(w, b) ? root(parent, b) : -1;
@@ -262,30 +271,105 @@ static int instant(vrWorld *w, int *parent, int *in_island, double t, int a, int
     return rc;
 }
 
-int vrIsland_Instant(vrWorld *w, double t, int a, int b, char *err, size_t n)
+/* body id's velocities at t after the solve: its state in up (slot[id]
+ * >= 0), else as it flies */
+static void velocities_after(vrWorld *w, const vrUpdate *up, const int *slot, int id, double t, vec3 *x, vec3 *v,
+                             vec3 *om)
 {
-    int *parent, *in_island, r = gather(w, t, 0, err, n);
-    if (r != 0) return r;
-    parent = malloc(((size_t)w->table.n + 1) * sizeof *parent);
-    in_island = malloc(((size_t)w->table.n + 1) * sizeof *in_island);
-    w->update.n = 0;
-    r = parent && in_island ? instant(w, parent, in_island, t, a, b, &w->update) : -1;
+    vrBody *b = &w->table.obj[id]->body;
+    vrPose pose;
+    mat33 iw;
+    if (b->is_static) {
+        *x = *v = *om = vec3_zero();
+        return;
+    }
+    if (slot[id] < 0) {
+        vrBody_Pose(b, t, &pose);
+        vrBody_Velocity(b, t, v);
+        *x = pose.p, *om = vrBody_Omega(b, &pose);
+        return;
+    }
+    pose = vrPose_make(up->body[slot[id]].x, up->body[slot[id]].q);
+    iw = vrBody_InvInertiaWorld(b, &pose);
+    *x = pose.p, *v = up->body[slot[id]].v, *om = mat33_mulv(&iw, up->body[slot[id]].L);
+}
+
+/* A pair that was leaving may come back when the solve pushes one of its
+ * bodies (a ball pressed off a box into its neighbour): such touches are
+ * marked turned back (-1), and the step is solved again with them, so
+ * that no contact impulse follows it at its instant.  The number turned
+ * back; -1 when out of memory. */
+static int turned_back(vrWorld *w, const vrUpdate *up, double t)
+{
+    int *slot = malloc(((size_t)w->table.n + 1) * sizeof *slot), i, k, count = 0;
+    if (!slot) return -1;
+    for (i = 0; i < w->table.n; i++) slot[i] = -1;
+    for (i = 0; i < up->n; i++) slot[up->body[i].id] = i;
+    for (k = 0; k < w->touches.n; k++) {
+        vrTouch *c = &w->touches.t[k];
+        vec3 xa, va, wa, xb, vb, wb;
+        if (c->leaving <= 0 || (slot[c->a] < 0 && slot[c->b] < 0)) continue;
+        velocities_after(w, up, slot, c->a, t, &xa, &va, &wa);
+        velocities_after(w, up, slot, c->b, t, &xb, &vb, &wb);
+        for (i = 0; i < c->npoints; i++) {
+            vec3 ua = vec3_add(va, vec3_cross(wa, vec3_sub(c->point[i], xa)));
+            vec3 ub = vec3_add(vb, vec3_cross(wb, vec3_sub(c->point[i], xb)));
+            if (vec3_dot(c->n, vec3_sub(ub, ua)) < -VR_V_EPS) break;
+        }
+        if (i < c->npoints) c->leaving = -1, count++;
+    }
+    free(slot);
+    return count;
+}
+
+#define TURN_BACK_ROUNDS 4   /* solves again at most (then the events answer what is left) */
+
+/* the step (h > 0) or the instant of a and b (h = 0), solved again while
+ * its solve turns leaving pairs back; the counts kept are the last solve's */
+static int solve_all(vrWorld *w, double t, double h, int a, int b, char *err, size_t n)
+{
+    int *parent = malloc(((size_t)w->table.n + 1) * sizeof *parent);
+    int *in_island = malloc(((size_t)w->table.n + 1) * sizeof *in_island), round, r = -1;
+    long long collisions = w->collisions, steps = w->island_steps, contacts = w->island_contacts;
+    for (round = 0; parent && in_island && round <= TURN_BACK_ROUNDS; round++) {
+        w->collisions = collisions, w->island_steps = steps, w->island_contacts = contacts;
+        w->update.n = 0;
+        w->warm_next.n = 0;
+        r = h > 0 ? step(w, parent, in_island, t, h, &w->update) : instant(w, parent, in_island, t, a, b, &w->update);
+        if (r != 0 || round == TURN_BACK_ROUNDS || (r = turned_back(w, &w->update, t)) <= 0) break;
+        r = 0;
+    }
     free(parent);
     free(in_island);
     if (r != 0 || vrWorld_ApplyUpdate(w, &w->update) != 0) return vrGeom_Fail(err, n, "out of memory or a bad island");
+    if (h > 0) {              /* the step's impulses start the next one's solve */
+        vrWarm keep = w->warm;
+        w->warm = w->warm_next, w->warm_next = keep;
+        vrWarm_Sort(&w->warm);
+        w->warm.structure = w->structure;
+    }
     return 0;
+}
+
+/* 1 when the touches hold the pair (a, b), coming together */
+static int touches_pair(const vrWorld *w, int a, int b)
+{
+    vrTouch key;
+    const vrTouch *k;
+    key.a = a < b ? a : b, key.b = a < b ? b : a;
+    k = w->touches.n ? bsearch(&key, w->touches.t, (size_t)w->touches.n, sizeof key, by_pair) : NULL;
+    return k && k->leaving <= 0;
+}
+
+int vrIsland_Instant(vrWorld *w, double t, int a, int b, char *err, size_t n)
+{
+    int r = gather(w, t, 0, err, n);
+    if (r != 0) return r;
+    return touches_pair(w, a, b) ? solve_all(w, t, 0, a, b, err, n) : 1;
 }
 
 int vrIsland_Step(vrWorld *w, double t, double h, char *err, size_t n)
 {
-    int *parent, *in_island, r = gather(w, t, h, err, n);
-    if (r != 0) return r;
-    parent = malloc(((size_t)w->table.n + 1) * sizeof *parent);
-    in_island = malloc(((size_t)w->table.n + 1) * sizeof *in_island);
-    w->update.n = 0;
-    r = parent && in_island ? step(w, parent, in_island, t, h, &w->update) : -1;
-    free(parent);
-    free(in_island);
-    if (r != 0 || vrWorld_ApplyUpdate(w, &w->update) != 0) return vrGeom_Fail(err, n, "out of memory or a bad island");
-    return 0;
+    int r = gather(w, t, h, err, n);
+    return r != 0 ? r : solve_all(w, t, h, -1, -1, err, n);
 }

@@ -9,10 +9,11 @@
  * paid into the velocities; the states go through vrWorld_ApplyUpdate.
  * 0, -1 (err), or VR_RESTART_FRAME from the owners. */
 int vrIsland_Step(vrWorld *w, double t, double h, char *err, size_t n);
-/* The contacts of an instant: after a response at t, the islands of
- * bodies a and b (the pair of a follow-up contact impulse) solved at once,
- * every touching point that comes in held (no gravity to pay, no gap to
- * close; restitution as at an island step).  Counted in collisions. */
+/* The contacts of an instant: the islands of bodies a and b (the pair of
+ * an impulse event at t) solved at once, every touching point that comes
+ * in held (no gravity to pay, no gap to close; restitution as at an
+ * island step).  Counted in collisions.  1 (nothing done) when the owners
+ * do not report the pair itself touching: the event is answered alone. */
 int vrIsland_Instant(vrWorld *w, double t, int a, int b, char *err, size_t n);
 
 #endif

@@ -7,7 +7,9 @@
 
 #define VR_LCP_MAX 8
 
-/* A is n x n, row major; x gets the answer.  A is regularised by a
+/* A is n x n, row major; x holds a guess (its positive entries are the
+ * first basis: the last sweep's answer usually is the answer's) and gets
+ * the answer.  A is regularised by a
  * relative 1e-12 on its diagonal (the points of a face are redundant: A
  * is singular).  0, or -1 when the pivoting did not end (then x is the
  * last basis's, clamped to >= 0). */

@@ -85,19 +85,23 @@ typedef struct Frame {
     int instant;             /* at an instant that had its VR_INSTANT_MAX does not give it more */
 } Frame;
 
-/* SPEC 7: a contact impulse that follows a response at its instant (a
- * box coming down on a stack, a ball on a board on a ball) is answered
- * with every contact of its islands together (island_step.c), not one
- * corner at a time: at once when the pair cannot bounce, after
- * VR_PAIRWISE_MAX pairwise answers when it can (a Newton's cradle's
- * impulses go down the row one by one, as they must to send out one
- * ball).  The decision reads only the bodies, as every owner set can. */
+/* SPEC 7: an impulse that follows a response at its instant (a box
+ * coming down on a stack, a ball on a board on a ball), or that meets a
+ * body touching others (a box landing on four balls on the floor), is
+ * answered with every contact of its islands together (island_step.c),
+ * not one corner at a time: at once when the pair cannot bounce (e = 0);
+ * when it can, follow-ups only, after VR_PAIRWISE_MAX pairwise answers (a
+ * Newton's cradle's impulses go down the row one by one, as they must to
+ * send out one ball).  (Every slow follow-up answered together cost a
+ * pile twice the time: each solves whole islands.)  The decision reads
+ * only the bodies, as every owner set can. */
 static int answered_together(const vrWorld *w, const Frame *f, const vrEvent *ev)
 {
-    double e;
-    if (ev->kind != VR_EV_CONTACT || ev->t != f->instant_t) return 0;
-    e = fmin(w->table.obj[ev->a]->body.elasticity, w->table.obj[ev->b]->body.elasticity);
-    return e == 0 || f->instant >= VR_PAIRWISE_MAX;
+    const vrBody *A = &w->table.obj[ev->a]->body, *B = &w->table.obj[ev->b]->body;
+    int follow_up = ev->kind == VR_EV_CONTACT && ev->t == f->instant_t;
+    if (ev->kind != VR_EV_CONTACT && ev->kind != VR_EV_IMPACT) return 0;
+    if (fmin(A->elasticity, B->elasticity) == 0) return follow_up || A->contact || B->contact;
+    return follow_up && f->instant >= VR_PAIRWISE_MAX;
 }
 
 /* the events of [f->ts, end]: the owners' first event of all, answered,
@@ -115,8 +119,7 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
             return r;
         }
         w->subframes += ev.t > f->ts ? vrSchedule_FirstPointAtOrAfter(&g, ev.t) : 0;
-        if (answered_together(w, f, &ev)) {
-            r = vrIsland_Instant(w, ev.t, ev.a, ev.b, err, n);
+        if (answered_together(w, f, &ev) && (r = vrIsland_Instant(w, ev.t, ev.a, ev.b, err, n)) != 1) {
             if (r != 0) return r;
             reach_changed(w, &w->update, p);
             f->instant++;

@@ -181,8 +181,9 @@ static void keep_points(const vrContact *c, vrTouch *k)
 }
 
 /* Pair p's contact at t when it touches (within the region's level),
- * unless it leaves (every point separating faster than v_eps: it flies
- * on) or every point comes in faster than an impact that does not bounce
+ * marked leaving when every point separates faster than v_eps (it flies
+ * on, unless the island's solve turns it back: island_step.c), and none
+ * when every point comes in faster than an impact that does not bounce
  * would once the step has closed its gap to g_c (v_rest, SPEC 3.1; v_eps
  * with no force): that is an impact, found at g_c and answered with its
  * restitution, exactly, as in free flight.  A pair that rests on some
@@ -198,13 +199,13 @@ static int touch_of(vrOwner *o, vrPair *p, double t, double h, vrTouches *out)
     vrPair_EventQuery(o, p, t, &pa, &pb, &c);
     if (c.npoints == 0 || c.dist > o->region) return 0;
     approach(o, p, t, &pa, &pb, &c, &ap);
-    if (ap.umin > VR_V_EPS) return 0;
-    for (i = 0; h > 0 && i < c.npoints && ap.u[i] < -(o->v_rest + VR_V_EPS + vr_max(0, c.gap[i] - o->gc) / h); i++)
+    for (i = 0; h > 0 && ap.umin <= VR_V_EPS && i < c.npoints && ap.u[i] < -(o->v_rest + VR_V_EPS + vr_max(0, c.gap[i] - o->gc) / h); i++)
         ;
     if (h > 0 && i == c.npoints) return 0;
-    if (h > 0) p->touch_t = t;
+    if (h > 0 && ap.umin <= VR_V_EPS) p->touch_t = t;
     if (!(k = vrTouches_Add(out))) return -1;
     k->a = p->a, k->b = p->b, k->n = c.n, k->dist = c.dist;
+    k->leaving = ap.umin > VR_V_EPS;
     keep_points(&c, k);
     return 0;
 }

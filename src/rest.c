@@ -4,7 +4,7 @@
  * the last island step (island_step.c) carry the island's id, its lowest
  * body id.  At a frame end an island rests when every body of it is in an
  * island's contact step, moved less than 1e-4 m and turned less than
- * 1e-3 rad over the frame, and was hit by no impulse: no force, no motion,
+ * 1e-3 rad over each of the last two frames, and was hit by no impulse: no force, no motion,
  * its poses frozen as they are (never snapped), its pairs among themselves
  * and with static bodies unscheduled.  When anything changes a body of a
  * resting island (a response, an edit, a moving body touching it at an
@@ -20,6 +20,8 @@
 
 #define REST_DISPLACEMENT 1e-4   /* m per frame */
 #define REST_ROTATION 1e-3       /* rad per frame */
+#define REST_FRAMES 2            /* frames in a row: a body rocking on an edge, turning back
+                                    within one frame, must not be caught there */
 
 static const vrBodyState *in_update(const vrUpdate *up, int id)
 {
@@ -96,7 +98,8 @@ int vrRest_FrameEnd(vrWorld *w, vrUpdate *up)
         vrObject *o = w->table.obj[i];
         if (!o || !o->live || o->body.is_static || o->body.resting) continue;
         if (o->body.island < 0) continue;
-        if (!qualifies(w, up, o)) fails[o->body.island] = 1;
+        o->quiet_frames = qualifies(w, up, o) ? o->quiet_frames + 1 : 0;
+        if (o->quiet_frames < REST_FRAMES) fails[o->body.island] = 1;
     }
     for (i = 0; i < w->table.n; i++) {
         vrObject *o = w->table.obj[i];

@@ -26,6 +26,7 @@ typedef struct vrObject {
                                 checked: its pairs are checked at the next (SPEC 1.4) */
     vrPose frame_pose;       /* at the end of the last frame (SPEC 3.5) */
     int have_frame_pose;
+    int quiet_frames;        /* frames in a row it qualified for rest (rest.c) */
 } vrObject;
 
 typedef struct vrTable {

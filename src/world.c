@@ -46,6 +46,8 @@ void vrWorld_Destroy(vrWorld *w)
     vrUpdate_Free(&w->update);
     vrUpdate_Free(&w->pending);
     vrTouches_Free(&w->touches);
+    vrWarm_Free(&w->warm);
+    vrWarm_Free(&w->warm_next);
     free(w);
 }
 

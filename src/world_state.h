@@ -25,6 +25,7 @@
 #include "reach.h"
 #include "splitmix.h"
 #include "table.h"
+#include "warm.h"
 
 typedef struct vrSgp vrSgp;
 
@@ -55,6 +56,7 @@ struct vrWorld {
     int *changed;            /* scratch: ids changed by an update */
     int nchanged, changedcap;
     vrTouches touches;       /* scratch: an island step's touching pairs */
+    vrWarm warm, warm_next;  /* the last island step's impulses (warm.h); the step's being kept */
     /* statistics (SPEC 1.3, 7) */
     long subframes;
     long long collisions;

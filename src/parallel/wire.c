@@ -94,16 +94,18 @@ int vrWire_PutTouches(vroc_candidates_t *m, const vrTouches *c)
     m->b = malloc((size_t)(c->n + 1) * sizeof *m->b);
     m->npoints = malloc((size_t)(c->n + 1) * sizeof *m->npoints);
     m->dist = malloc((size_t)(c->n + 1) * sizeof *m->dist);
+    m->leaving = malloc((size_t)(c->n + 1) * sizeof *m->leaving);
     m->normal = malloc((size_t)(m->n3 + 1) * sizeof *m->normal);
     m->gaps = malloc((size_t)(m->npt + 1) * sizeof *m->gaps);
     m->points = malloc((size_t)(m->npt3 + 1) * sizeof *m->points);
-    if (!m->a || !m->b || !m->npoints || !m->dist || !m->normal || !m->gaps || !m->points) return -1;
+    if (!m->a || !m->b || !m->npoints || !m->dist || !m->leaving || !m->normal || !m->gaps || !m->points) return -1;
     for (i = 0, npt = 0; i < c->n; i++) {
         const vrTouch *k0 = &c->t[i];
         m->a[i] = k0->a;
         m->b[i] = k0->b;
         m->npoints[i] = k0->npoints;
         m->dist[i] = k0->dist;
+        m->leaving[i] = k0->leaving != 0;
         put3(&m->normal[3 * i], k0->n);
         for (k = 0; k < k0->npoints; k++, npt++) {
             put3(&m->points[3 * npt], k0->point[k]);
@@ -119,6 +121,7 @@ void vrWire_FreeTouches(vroc_candidates_t *m)
     free(m->b);
     free(m->npoints);
     free(m->dist);
+    free(m->leaving);
     free(m->normal);
     free(m->gaps);
     free(m->points);
@@ -142,6 +145,7 @@ int vrWire_GetTouches(const vroc_candidates_t *m, int max_id, vrTouches *out)
         c->b = m->b[i];
         c->n = get3(&m->normal[3 * i]);
         c->dist = m->dist[i];
+        c->leaving = m->leaving[i] != 0;
         c->npoints = m->npoints[i];
         for (k = 0; k < c->npoints; k++, npt++) {
             c->point[k] = get3(&m->points[3 * npt]);
