@@ -21,6 +21,10 @@ gravity or none; then steps it in blocks and, after every block, checks
     centre crosses a thin plate's plane where the plate stands wider around
     it than the body reaches plus how far it moved in the frame;
   - every dumped number is finite;
+  - two in five of the other seeds are rough (SPEC 7): every object has
+    friction (default_friction, 0.2..1), half of them a stack of boxes and
+    all a pile of 6..12 balls and boxes dropped onto each other, under the
+    same checks (no overlap, energy never growing, same bits);
   - heap = 0, and workers (memq://, in this process's memory: 2 dealt
     round robin for even seeds, 3 by the improved distribution for odd), print
     the same dumps as heap = 1 serially, to the bit (SPEC 3.2, 5).
@@ -47,6 +51,10 @@ def scene(seed, mode="heap = 1"):
     if not conservative and not free:
         P("gravity")
     P(mode)
+    rough = random.Random(seed * 7 + 1)    # its own stream: the other seeds' scenes stay as they were
+    is_rough = not conservative and not free and rough.random() < 0.4
+    if is_rough:
+        P("default_friction = %g" % rough.uniform(0.2, 1))
     # a 3 m room of 0.1 m walls
     for name, size, at in () if free else (("floor", (1.6, 1.6, 0.1), (0, 0, -0.1)), ("ceil", (1.6, 1.6, 0.1), (0, 0, 3.1)),
                            ("wx0", (0.1, 1.6, 1.6), (-1.6, 0, 1.5)), ("wx1", (0.1, 1.6, 1.6), (1.6, 0, 1.5)),
@@ -77,7 +85,7 @@ def scene(seed, mode="heap = 1"):
     placed, near = [], {}          # near: how far the others keep from a placed centre
     k = random.Random(seed * 5 + 3)
     x, y = k.uniform(-1, 1), k.uniform(-1, 1)
-    if not free and k.random() < 0.125 and all(math.dist((x, y), s[:2]) > 0.9 for s in statics):
+    if not free and k.random() < (0.5 if is_rough else 0.125) and all(math.dist((x, y), s[:2]) > 0.9 for s in statics):
         z = 0.0
         for j in range(k.randint(2, 5)):
             half = tuple(float("%.6g" % v) for v in (k.uniform(0.05, 0.15), k.uniform(0.05, 0.15), k.uniform(0.02, 0.08)))
@@ -89,6 +97,21 @@ def scene(seed, mode="heap = 1"):
             placed.append(c)
             near[c] = 0.5
             z += half[2]
+    # a rough room's pile: a column of balls and boxes 0.25 m apart, a little
+    # off one another, dropped onto the floor and onto each other
+    px, py = rough.uniform(-1, 1), rough.uniform(-1, 1)
+    if is_rough and all(math.dist((px, py), s[:2]) > 0.9 for s in statics) and all(math.dist((px, py), q[:2]) > 0.6 for q in placed):
+        for j in range(rough.randint(6, 12)):
+            c = (px + rough.uniform(-.04, .04), py + rough.uniform(-.04, .04), 0.12 + 0.25 * j)
+            if rough.random() < 0.5:
+                P("sphere p%d\n radius = %g" % (j, 0.08))
+                reach["p%d" % j] = 0.08
+            else:
+                P("cube p%d\n size = (0.08,0.08,0.08)" % j)
+                reach["p%d" % j] = 0.08 * math.sqrt(3)
+            P(" translate = (%.17g,%.17g,%.17g)\n mass = %g\n elasticity = %g" % (c + (rough.choice([0.5, 1, 2]), rough.uniform(0, 0.8))))
+            placed.append(c)
+            near[c] = 0.45
     # dynamic objects on a loose grid, clear of the statics
     for i in range(r.randint(2, 9)):
         for _ in range(200):
