@@ -518,7 +518,7 @@ static int test_messages_do_not_grow_with_objects(void)
     n_apart = 200;
     big = run(drifting, 3, "memq://", VR_DIST_ROUND_ROBIN, 50);
     printf("    messages: %lld with 20 objects, %lld with 200\n", small.stats.messages, big.stats.messages);
-    ENSURE(!small.failed && !big.failed);
+    ENSURE_MSG(!small.failed && !big.failed, "%s%s", small.err, big.err);
     ENSURE(small.stats.collisions == 0 && big.stats.collisions == 0);
     ENSURE(small.stats.messages == big.stats.messages);
     return 0;

@@ -25,7 +25,8 @@ typedef struct vrGpInfo {
     long long nonce;
     pid_t pid;                  /* forked workers; 0 otherwise */
     int alive, replied;
-    double last_heard;
+    double last_heard;          /* the exchange's idle time (vrSgp.idle_ms) when it last spoke */
+    double last_heard_wall;     /* and the clock's (ms) */
     int found;                  /* its last earliest */
     double t;
     long long order;
@@ -57,6 +58,7 @@ struct vrSgp {
     long long snap_collisions, snap_island_steps, snap_island_contacts;
     vrGpCounts snap_counts[VR_MAX_GPS];  /* each worker's counts then (before + now) */
     long long requests, received, foreign, malformed;
+    double idle_ms;             /* of the current exchange: waits in which no message came */
     lcm_subscription_t *subs[4];
 };
 
