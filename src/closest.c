@@ -36,8 +36,7 @@
  *   nearest_pair, exhaustive
  *   walk_init, separated             a query's start; its check of the end
  *   pair_query                       the walk between two polyhedra
- *   point_step, point_exhaustive,    the walk against a point
- *   point_query
+ * The walk against a point (sphere centres) is closest_point.c's.
  */
 #include <stdlib.h>
 
@@ -46,52 +45,7 @@
 #include "segment.h"
 #include "voronoi.h"
 
-/* slack of region tests, relative to the scale of the pair (metres) */
-#define REGION_TOL 1e-12
-
-enum { GO, DONE, PENETRATING };
-
-static vrFeature feat(int type, int index)
-{
-    vrFeature f;
-    f.type = type;
-    f.index = index;
-    return f;
-}
-
-static int feature_valid(const vrPolyhedron *p, vrFeature f)
-{
-    int n[3];
-    n[0] = p->nv, n[1] = p->ne, n[2] = p->nf;
-    return (unsigned)f.type < 3 && (unsigned)f.index < (unsigned)n[f.type];
-}
-
-/* the face plane x is farthest above (the nearest one when x is inside) */
-static int highest_face(const vrPolyhedron *p, vec3 x, double *height)
-{
-    int g, best = 0;
-    double smax = -HUGE_VAL;
-    for (g = 0; g < p->nf; g++) {
-        double s = vrPolyhedron_FaceHeight(p, g, x);
-        if (s > smax) {
-            smax = s;
-            best = g;
-        }
-    }
-    *height = smax;
-    return best;
-}
-
-/* closest point of feature f to x, x in f's region (all in p's frame) */
-static vec3 closest_on_feature(const vrPolyhedron *p, vrFeature f, vec3 x)
-{
-    if (f.type == VR_VERTEX) return p->vert[f.index];
-    if (f.type == VR_EDGE) {
-        vec3 t = p->vert[p->edge_v[f.index][0]], h = p->vert[p->edge_v[f.index][1]];
-        return vec3_lerp(t, h, vrSegment_PointParam(t, h, x));
-    }
-    return vec3_madd(x, -vrPolyhedron_FaceHeight(p, f.index, x), p->face_normal[f.index]);
-}
+enum { GO = VR_WALK_GO, DONE = VR_WALK_DONE, PENETRATING };
 
 /* The edge of vertex v along which dot(dir, .) rises fastest, by more than
  * tol per edge (so an edge parallel to a face plane is no way down); -1 if none. */
@@ -173,7 +127,7 @@ static int vertex_edge(Walk *w, int i)
     vec3 x = vert_in_other(w, i, w->f[i].index), q, qi;
     vrFeature nbr;
     if (vrVoronoi_Violation(w->p[j], w->f[j], x, w->tol, &nbr, &w->slack2)) return move(w, j, nbr);
-    q = closest_on_feature(w->p[j], w->f[j], x);
+    q = vrVoronoi_ClosestOnFeature(w->p[j], w->f[j], x);
     qi = to_other(w, j, q);
     if (vrVoronoi_Violation(w->p[i], w->f[i], qi, w->tol, &nbr, &w->slack2)) return move(w, i, nbr);
     /* side 0's points are in frame 0 already: the vertex (i = 0) or q (i = 1) */
@@ -188,9 +142,9 @@ static int local_minimum(Walk *w, int i, vec3 x)
 {
     int j = 1 - i;
     double smax;
-    int best = highest_face(w->p[j], x, &smax);
+    int best = vrVoronoi_HighestFace(w->p[j], x, &smax);
     if (smax <= 0) return penetrating(w, smax, in_frame0(w, j, x));
-    return move(w, j, feat(VR_FACE, best));
+    return move(w, j, vrFeature_Make(VR_FACE, best));
 }
 
 /* vertex on side i, face on side 1-i */
@@ -206,7 +160,7 @@ static int vertex_face(Walk *w, int i)
     n_i = rotate_other(w, j, q->face_normal[f]);
     /* an edge of v leading toward the plane lowers |h| */
     e = steepest_edge(w->p[i], v, h >= 0 ? vec3_neg(n_i) : n_i, w->tol);
-    if (e >= 0) return move(w, i, feat(VR_EDGE, e));
+    if (e >= 0) return move(w, i, vrFeature_Make(VR_EDGE, e));
     if (h < 0) return local_minimum(w, i, x);
     x = vec3_madd(x, -h, q->face_normal[f]); /* its projection on the face, frame j */
     return i == 0 ? done(w, w->p[0]->vert[v], to_other(w, 1, x)) : done(w, x, vert_in_other(w, 1, v));
@@ -227,7 +181,7 @@ static vrFeature nearest_boundary_edge(const vrPolyhedron *p, int f, vec3 t, vec
             best = k;
         }
     }
-    return feat(VR_EDGE, p->face_edge[s + best]);
+    return vrFeature_Make(VR_EDGE, p->face_edge[s + best]);
 }
 
 /* Edge on side i, face on side j (Mirtich sec. 5.4).  Never a final state:
@@ -252,8 +206,8 @@ static int edge_face(Walk *w, int i)
     /* derivative of the distance |height| along t -> h */
     slope = vec3_dot(q->face_normal[f], vec3_sub(h, t));
     if (dl < 0 || (dl == 0 && du < 0)) slope = -slope;
-    if (slope >= 0) return lo == 0 ? move(w, i, feat(VR_VERTEX, ev[0])) : move(w, j, nearest_boundary_edge(q, f, t, h));
-    return hi == 1 ? move(w, i, feat(VR_VERTEX, ev[1])) : move(w, j, nearest_boundary_edge(q, f, t, h));
+    if (slope >= 0) return lo == 0 ? move(w, i, vrFeature_Make(VR_VERTEX, ev[0])) : move(w, j, nearest_boundary_edge(q, f, t, h));
+    return hi == 1 ? move(w, i, vrFeature_Make(VR_VERTEX, ev[1])) : move(w, j, nearest_boundary_edge(q, f, t, h));
 }
 
 static int edge_edge(Walk *w)
@@ -284,7 +238,7 @@ static int walk_step(Walk *w)
     case VR_EDGE * 3 + VR_FACE: return edge_face(w, 0);
     case VR_FACE * 3 + VR_EDGE: return edge_face(w, 1);
     default: /* face-face: the walk never makes it; from a foreign cache, take a vertex */
-        return move(w, 0, feat(VR_VERTEX, w->p[0]->face_vert[w->p[0]->face_start[w->f[0].index]]));
+        return move(w, 0, vrFeature_Make(VR_VERTEX, w->p[0]->face_vert[w->p[0]->face_start[w->f[0].index]]));
     }
 }
 
@@ -306,7 +260,7 @@ static void pair_points(const Walk *w, vec3 *c0, vec3 *c1)
     i = w->f[0].type == VR_VERTEX ? 0 : 1;
     j = 1 - i;
     c[i] = in_frame0(w, i, w->p[i]->vert[w->f[i].index]);
-    c[j] = in_frame0(w, j, closest_on_feature(w->p[j], w->f[j], vert_in_other(w, i, w->f[i].index)));
+    c[j] = in_frame0(w, j, vrVoronoi_ClosestOnFeature(w->p[j], w->f[j], vert_in_other(w, i, w->f[i].index)));
     *c0 = c[0];
     *c1 = c[1];
 }
@@ -326,8 +280,8 @@ static int find_piercing(Walk *w, int i)
             dl = vrPolyhedron_FaceHeight(q, f, vec3_lerp(t, h, lo));
             du = vrPolyhedron_FaceHeight(q, f, vec3_lerp(t, h, hi));
             if ((dl < 0 && du > 0) || (dl > 0 && du < 0)) {
-                w->f[i] = feat(VR_EDGE, e);
-                w->f[j] = feat(VR_FACE, f);
+                w->f[i] = vrFeature_Make(VR_EDGE, e);
+                w->f[j] = vrFeature_Make(VR_FACE, f);
                 return penetrating(w, 0, in_frame0(w, j, vec3_lerp(t, h, lo + (hi - lo) * dl / (dl - du))));
             }
         }
@@ -342,8 +296,8 @@ static int find_contained(Walk *w, int i)
     vec3 x = vert_in_other(w, i, 0);
     for (f = 0; f < w->p[j]->nf; f++)
         if (vrPolyhedron_FaceHeight(w->p[j], f, x) > 0) return GO;
-    w->f[i] = feat(VR_VERTEX, 0);
-    w->f[j] = feat(VR_FACE, 0);
+    w->f[i] = vrFeature_Make(VR_VERTEX, 0);
+    w->f[j] = vrFeature_Make(VR_FACE, 0);
     return penetrating(w, 0, in_frame0(w, j, x));
 }
 
@@ -360,8 +314,8 @@ static void nearest_pair(Walk *w)
                 double h = vrPolyhedron_FaceHeight(q, f, x);
                 if (h < 0 || h >= best || !vrVoronoi_InPrism(q, f, x)) continue;
                 best = h;
-                w->f[i] = feat(VR_VERTEX, v);
-                w->f[1 - i] = feat(VR_FACE, f);
+                w->f[i] = vrFeature_Make(VR_VERTEX, v);
+                w->f[1 - i] = vrFeature_Make(VR_FACE, f);
             }
         }
     }
@@ -374,8 +328,8 @@ static void nearest_pair(Walk *w)
             d = vec3_dist(vec3_lerp(a0, a1, s), vec3_lerp(b0, b1, t));
             if (d >= best) continue;
             best = d;
-            w->f[0] = feat(VR_EDGE, e0);
-            w->f[1] = feat(VR_EDGE, e1);
+            w->f[0] = vrFeature_Make(VR_EDGE, e0);
+            w->f[1] = vrFeature_Make(VR_EDGE, e1);
         }
 }
 
@@ -391,7 +345,6 @@ static int exhaustive(Walk *w)
 
 /* ---- entry points ------------------------------------------------------- */
 
-static int step_cap(const vrPolyhedron *p) { return 2 * (p->nv + p->ne + p->nf); }
 
 /* Ra^T Rb, spelt out by columns of Rb: the walk's one 3x3 product a query,
  * without forming the transpose */
@@ -415,12 +368,12 @@ static void walk_init(Walk *w, const vrPolyhedron *a, const vrPose *pa, const vr
     w->R = relative_rotation(&pa->R, &pb->R);
     w->t = mat33_tmulv(&pa->R, vec3_sub(pb->p, pa->p));
     scale = a->r_out + b->r_out + vec3_maxabs(w->t); /* a size, no sqrt needed */
-    w->tol = REGION_TOL * (scale > 1 ? scale : 1);
-    if (cache && cache->valid && feature_valid(a, cache->a) && feature_valid(b, cache->b)) {
+    w->tol = VR_REGION_TOL * (scale > 1 ? scale : 1);
+    if (cache && cache->valid && vrFeature_Valid(a, cache->a) && vrFeature_Valid(b, cache->b)) {
         w->f[0] = cache->a;
         w->f[1] = cache->b;
     } else {
-        w->f[0] = w->f[1] = feat(VR_VERTEX, 0);
+        w->f[0] = w->f[1] = vrFeature_Make(VR_VERTEX, 0);
     }
 }
 
@@ -482,7 +435,7 @@ static double pair_query(const vrPolyhedron *a, const vrPose *pa, const vrPolyhe
     walk_init(&w, a, pa, b, pb, cache);
     if (at_once) r = exhaustive(&w);
     while (r == GO && (r = walk_step(&w)) == GO)
-        if (++n >= 8 && n >= step_cap(a) + step_cap(b)) {
+        if (++n >= 8 && n >= vrClosest_StepCap(a) + vrClosest_StepCap(b)) {
             r = exhaustive(&w);
             if (cache) cache->fallbacks++;
         }
@@ -518,85 +471,3 @@ double vrClosest_Exhaustive(const vrPolyhedron *a, const vrPose *pa, const vrPol
 {
     return pair_query(a, pa, b, pb, cache, ca, cb, NULL, penetrating, 1);
 }
-
-/* ---- the walk against a point ------------------------------------------- */
-
-/* One step for point x (p's frame).  A face with x beneath its plane is
- * the local-minimum case: either x is inside (every plane above it; *f
- * becomes the nearest face and DONE) or the walk jumps to the face whose
- * plane x is farthest above. */
-static int point_step(const vrPolyhedron *p, vrFeature *f, vec3 x, double tol)
-{
-    vrFeature nbr;
-    double smax;
-    if (vrVoronoi_Violation(p, *f, x, tol, &nbr, NULL)) {
-        *f = nbr;
-        return GO;
-    }
-    if (f->type != VR_FACE || vrPolyhedron_FaceHeight(p, f->index, x) >= 0) return DONE;
-    *f = feat(VR_FACE, highest_face(p, x, &smax));
-    return smax <= 0 ? DONE : GO;
-}
-
-/* exhaustive point query: the nearest face plane when inside, else the
- * nearest vertex, edge, or face with x in its prism */
-static vrFeature point_exhaustive(const vrPolyhedron *p, vec3 x)
-{
-    double best;
-    int i, g = highest_face(p, x, &best);
-    vrFeature f = feat(VR_FACE, g);
-    if (best <= 0) return f;
-    best = HUGE_VAL;
-    for (i = 0; i < p->nv; i++) {
-        double d = vec3_dist(x, p->vert[i]);
-        if (d < best) best = d, f = feat(VR_VERTEX, i);
-    }
-    for (i = 0; i < p->ne; i++) {
-        double d = vec3_dist(x, closest_on_feature(p, feat(VR_EDGE, i), x));
-        if (d < best) best = d, f = feat(VR_EDGE, i);
-    }
-    for (i = 0; i < p->nf; i++) {
-        double h = vrPolyhedron_FaceHeight(p, i, x);
-        if (h >= 0 && h < best && vrVoronoi_InPrism(p, i, x)) best = h, f = feat(VR_FACE, i);
-    }
-    return f;
-}
-
-static double point_query(const vrPolyhedron *a, const vrPose *pa, vec3 point, vrWalkCache *cache, vec3 *ca,
-                          int *steps, int at_once)
-{
-    vec3 x = vrPose_invapply(pa, point), c;
-    vrFeature f = feat(VR_VERTEX, 0);
-    int n = 0;
-    double scale = a->r_out + vec3_maxabs(x), tol = REGION_TOL * (scale > 1 ? scale : 1);
-    if (cache && cache->valid && feature_valid(a, cache->a)) f = cache->a;
-    if (at_once) f = point_exhaustive(a, x);
-    while (!at_once && point_step(a, &f, x, tol) == GO)
-        if (++n >= 8 && n >= step_cap(a)) {
-            f = point_exhaustive(a, x);
-            if (cache) cache->fallbacks++;
-            break;
-        }
-    if (cache) {
-        cache->a = f;
-        cache->b = feat(VR_VERTEX, 0);
-        cache->valid = 1;
-    }
-    if (steps) *steps = n;
-    c = closest_on_feature(a, f, x);
-    if (ca) *ca = vrPose_apply(pa, c);
-    if (f.type == VR_FACE) return vrPolyhedron_FaceHeight(a, f.index, x);
-    return vec3_dist(x, c);
-}
-
-double vrClosest_WalkPoint(const vrPolyhedron *a, const vrPose *pa, vec3 point, vrWalkCache *cache, vec3 *ca,
-                           int *steps)
-{
-    return point_query(a, pa, point, cache, ca, steps, 0);
-}
-
-double vrClosest_ExhaustivePoint(const vrPolyhedron *a, const vrPose *pa, vec3 point, vrWalkCache *cache, vec3 *ca)
-{
-    return point_query(a, pa, point, cache, ca, NULL, 1);
-}
-

@@ -40,4 +40,11 @@ double vrClosest_Exhaustive(const vrPolyhedron *a, const vrPose *pa, const vrPol
                             vrWalkCache *cache, vec3 *ca, vec3 *cb, int *penetrating);
 double vrClosest_ExhaustivePoint(const vrPolyhedron *a, const vrPose *pa, vec3 point, vrWalkCache *cache, vec3 *ca);
 
+/* for the walks (closest.c, closest_point.c): a plane's slack in region
+ * tests, relative to the scale of the pair (m); a step's outcome; the
+ * step cap past which the exhaustive search answers */
+#define VR_REGION_TOL 1e-12
+enum { VR_WALK_GO, VR_WALK_DONE };
+static inline int vrClosest_StepCap(const vrPolyhedron *p) { return 2 * (p->nv + p->ne + p->nf); }
+
 #endif

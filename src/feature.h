@@ -52,6 +52,22 @@ typedef struct vrPolyhedron {
 
 typedef struct vrFeature { int type; int index; } vrFeature; /* VR_VERTEX / VR_EDGE / VR_FACE */
 
+static inline vrFeature vrFeature_Make(int type, int index)
+{
+    vrFeature f;
+    f.type = type;
+    f.index = index;
+    return f;
+}
+
+/* does f name a feature of p (a cache from another polyhedron may not)? */
+static inline int vrFeature_Valid(const vrPolyhedron *p, vrFeature f)
+{
+    int n[3];
+    n[0] = p->nv, n[1] = p->ne, n[2] = p->nf;
+    return (unsigned)f.type < 3 && (unsigned)f.index < (unsigned)n[f.type];
+}
+
 /* a vertex of feature f: where a search on p's graph starts */
 static inline int vrFeature_Vertex(const vrPolyhedron *p, vrFeature f)
 {

@@ -9,7 +9,10 @@
  *   vertex_region,           the planes of a vertex, an edge, a face
  *   edge_region, face_region
  *   face_plane               a face's FE plane through one of its edges
+ *   vrVoronoi_HighestFace,   the face planes' search, a feature's closest
+ *   vrVoronoi_ClosestOnFeature  point (the walks' ends, closest*.c)
  */
+#include "segment.h"
 #include "voronoi.h"
 
 /* Each region is bounded by planes, each naming the neighbour feature that
@@ -136,4 +139,29 @@ int vrVoronoi_InPrism(const vrPolyhedron *p, int f, vec3 x)
         if (vec3_dot(pl.nrm, x) > pl.off) return 0;
     }
     return 1;
+}
+
+int vrVoronoi_HighestFace(const vrPolyhedron *p, vec3 x, double *height)
+{
+    int g, best = 0;
+    double smax = -HUGE_VAL;
+    for (g = 0; g < p->nf; g++) {
+        double s = vrPolyhedron_FaceHeight(p, g, x);
+        if (s > smax) {
+            smax = s;
+            best = g;
+        }
+    }
+    *height = smax;
+    return best;
+}
+
+vec3 vrVoronoi_ClosestOnFeature(const vrPolyhedron *p, vrFeature f, vec3 x)
+{
+    if (f.type == VR_VERTEX) return p->vert[f.index];
+    if (f.type == VR_EDGE) {
+        vec3 t = p->vert[p->edge_v[f.index][0]], h = p->vert[p->edge_v[f.index][1]];
+        return vec3_lerp(t, h, vrSegment_PointParam(t, h, x));
+    }
+    return vec3_madd(x, -vrPolyhedron_FaceHeight(p, f.index, x), p->face_normal[f.index]);
 }

@@ -15,5 +15,10 @@ int vrVoronoi_Violation(const vrPolyhedron *p, vrFeature f, vec3 x, double tol, 
 int vrVoronoi_ClipToFace(const vrPolyhedron *p, int f, vec3 t, vec3 h, double *lo, double *hi);
 /* is x inside face f's prism? */
 int vrVoronoi_InPrism(const vrPolyhedron *p, int f, vec3 x);
+/* the face whose plane x lies farthest above (the nearest one when x is
+ * inside), and that height */
+int vrVoronoi_HighestFace(const vrPolyhedron *p, vec3 x, double *height);
+/* the closest point of feature f to x, for x in f's region */
+vec3 vrVoronoi_ClosestOnFeature(const vrPolyhedron *p, vrFeature f, vec3 x);
 
 #endif
