@@ -216,6 +216,50 @@ int vrDisplay_WriteFrames(const vrDisplay *d, const char *dir, long frame, char 
 const unsigned char *vrDisplay_Pixels(const vrDisplay *d, int eye, int *width, int *height);
 const char *vrDisplay_RendererName(const vrDisplay *d);
 
+/* ---- trackers: the head and the hand (SPEC 8) ------------------------- */
+typedef enum vrDevice { VR_DEVICE_HEAD, VR_DEVICE_HAND } vrDevice;
+#define VR_BUTTON_TRIGGER 1u
+#define VR_BUTTON_RESELECT 2u
+
+/* One tracker sample: a time, a position (m) and a unit quaternion (w, x,
+ * y, z; body to world), and for the hand a button mask.  The head's frame
+ * has the eyes at its origin, looking along its +y with its +z up (the
+ * identity looks along the world's +y, upright); the hand points along
+ * its +y. */
+typedef struct vrTrackerSample {
+    double t;
+    double position[3];
+    double orientation[4];
+    unsigned buttons;
+} vrTrackerSample;
+
+/* A sample of dev at simulation time s->t (not before the device's last
+ * sample: -1 and a message).  This is the one way samples come in: track
+ * files, live trackers and a window's mouse all push here. */
+int vrWorld_PushSample(vrWorld *w, vrDevice dev, const vrTrackerSample *s, char *err, size_t errlen);
+/* dev's pose at the world's current time, interpolated between samples
+ * (linear, slerp) and held after the last; -1 when dev has no sample */
+int vrWorld_TrackerPose(const vrWorld *w, vrDevice dev, vrTrackerSample *out);
+/* forgets dev's samples (the head: the view is the settings' again) */
+void vrWorld_ClearTracker(vrWorld *w, vrDevice dev);
+/* `track FILE`: the file's samples, their times taken from now (the
+ * world's simulation time), replacing what the devices it names had
+ * from now on.  The whole file is checked first: a bad line ("FILE:LINE:
+ * message" in err) changes nothing. */
+int vrWorld_ReadTrack(vrWorld *w, const char *path, char *err, size_t errlen);
+/* simulation time now */
+double vrWorld_Time(const vrWorld *w);
+
+/* a track file's samples in order, each handed to fn (its time as in the
+ * file); an error names the file and the line */
+typedef int (*vrTrackSampleFn)(void *user, vrDevice dev, const vrTrackerSample *s, char *err, size_t errlen);
+int vrTrackFile_Read(const char *path, vrTrackSampleFn fn, void *user, char *err, size_t errlen);
+
+/* the view the head pose gives: the eyes at its position, looking along
+ * its +y, up its +z, converging as far away as view's focal distance
+ * (focal, or |look - eye| when 0) */
+void vrView_FromHead(vrView *view, const vrTrackerSample *head);
+
 /* ---- workers (SPEC 5) ---------------------------------------------------- */
 /* The loop of a worker process (`vroc-gp URL`): announces itself on the LCM
  * URL until a shell claims it, serves that shell's run, and returns when the

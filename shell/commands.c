@@ -97,6 +97,8 @@ const Command sh_commands[] = {
     VERB("random", "random N", "add N random dynamic objects r0, r1, ... (thesis table 5.6)", G_EXT, F_INT, R_CLOSED, 1, 10000, run_random),
     SETTING("room", "room = s", "put later random objects in a closed room of side s, m (0: none)", "0", G_EXT, K_NUM, R_CLOSED, 0, 1e6, room),
 
+    VERB("track", "track FILE", "play a track file (head and hand samples) from now, in simulation time", G_EXT, F_PATH, R_ANY, 0, 0, run_track),
+
     VIEW("resolution", "resolution = (w,h)", "frame size, pixels", "(640,512)", K_IVEC2, R_CLOSED, 16, 8192, width),
     VIEW("eye", "eye = (x,y,z)", "head (eye) position, m", "(0,-8,3)", K_VEC3, R_ANY, 0, 0, eye),
     VIEW("look", "look = (x,y,z)", "the point looked at, m", "(0,0,1)", K_VEC3, R_ANY, 0, 0, look),

@@ -171,6 +171,14 @@ else fail "gen_views: eye/look/up did not change the frame, or reset did not res
 if cmp -s "$work/e1/$f" "$work/e2/$f" && ! cmp -s "$work/e1/$f" "$work/e3/$f"; then pass
 else fail "gen_views: see_through = 2 did not hide the real = 1 object, or = 0 did not show it (e1, e2, e3)"; fi
 
+# a tracked head drives the view; reset gives it back (tests/shell/head_track.in)
+run_case gen_head_track "$gold/head_track.in"
+f0=frame-000000-left.ppm f1=frame-000001-left.ppm
+black() { [ "$(tail -c +14 "$1" | tr -d '\000' | wc -c)" = 0 ]; }
+if cmp -s "$work/h1/$f0" "$work/h2/$f0" && ! cmp -s "$work/d0/$f0" "$work/h1/$f0" && black "$work/h2/$f1" &&
+    ! black "$work/h1/$f0" && cmp -s "$work/d0/$f0" "$work/h3/$f1"; then pass
+else fail "gen_head_track: the head's pose did not drive the view (h1 = h2, h2/1 black), or reset did not restore it (h3 = d0)"; fi
+
 # a display that cannot open is an error of that line, and the shell goes on
 printf 'display\nsphere a\ndump\n' | (cd "$work" && VROC_RENDER_MODULE=/nonexistent/vroc-render.so timeout 60 "$vroc" \
     >"$tmp/out" 2>"$tmp/err")
