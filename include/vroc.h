@@ -81,11 +81,12 @@ typedef struct vrSettings {
     int gps;                  /* worker processes, 0 = serial */
     vrDistribution distribution;
     char lcm_url[256];        /* udpm://239.255.76.67:7667?ttl=0 */
-    char collision_sound[256];/* kept for the sound server (not played yet) */
+    char collision_sound[256];/* the sound of collisions (SPEC 8): a file or a built-in; "" = bounce */
     double collision_vol;     /* 0..1, 1.0 */
     double default_friction;  /* 0..10, 0: the friction objects created after it start with */
     double default_elasticity;/* 0..1, 1: the elasticity objects created after it start with */
     double contact_step;      /* > 0 .. 0.1 s, 1/240: the longest step between island steps (SPEC 7) */
+    double sound_min_speed;   /* >= 0, 0.5 m/s: the slowest impact that sounds (SPEC 8) */
 } vrSettings;
 
 vrSettings vrSettings_Default(void);
@@ -259,6 +260,21 @@ int vrTrackFile_Read(const char *path, vrTrackSampleFn fn, void *user, char *err
  * its +y, up its +z, converging as far away as view's focal distance
  * (focal, or |look - eye| when 0) */
 void vrView_FromHead(vrView *view, const vrTrackerSample *head);
+
+/* ---- collision sounds (SPEC 8) ----------------------------------------- */
+/* One impact faster than sound_min_speed: its time, volume
+ * (collision_vol * min(1, speed / 10 m/s)), the point where its impulse
+ * acts, its approach speed and the pair.  At most one per pair per 0.1 s. */
+typedef struct vrSoundEvent {
+    double t;
+    double volume;
+    double position[3];
+    double speed;
+    vrObjectId a, b;
+} vrSoundEvent;
+/* the sound events of the last frame vrWorld_Step ran, in time order
+ * (valid until the next step); returns their count */
+int vrWorld_FrameSounds(const vrWorld *w, const vrSoundEvent **events);
 
 /* ---- workers (SPEC 5) ---------------------------------------------------- */
 /* The loop of a worker process (`vroc-gp URL`): announces itself on the LCM

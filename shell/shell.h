@@ -43,6 +43,7 @@ typedef struct Shell {
     int running;                 /* a real-time `start` is going on */
     char run_origin[VR_PATH_MAX + 32]; /* "FILE:LINE" of that `start`, for its errors */
     double next_frame;           /* monotonic seconds when the next real-time frame is due */
+    FILE *sound_log;             /* `sound_log = FILE`, NULL: none (sound.c) */
     long errors;                 /* errors so far: the exit status */
     Source *src;                 /* the innermost source being read */
 } Shell;
@@ -75,6 +76,10 @@ double sh_frame_wait(const Shell *sh);
 /* runs the due real-time frame; an error stops the run and is returned */
 int sh_tick(Shell *sh, char *err, size_t n);
 extern volatile sig_atomic_t sh_interrupted;   /* SIGINT: stop a long `step` */
+
+/* sound.c: the collision sound log (SPEC 8) */
+int sh_sound_frame(Shell *sh, char *err, size_t n);
+void sh_sound_close(Shell *sh);
 
 /* frames.c: the frames drawn and written (SPEC 4) */
 int sh_display_open(Shell *sh, char *err, size_t n);

@@ -50,6 +50,7 @@ void vrWorld_Destroy(vrWorld *w)
     vrWarm_Free(&w->warm);
     vrWarm_Free(&w->warm_next);
     vrWorld_FreeTrackers(w);
+    vrSounds_Free(&w->sounds);
     free(w);
 }
 
@@ -68,6 +69,7 @@ void vrWorld_Restart(vrWorld *w)
     w->instant_t = -INFINITY;
     vrWorld_ClearTracker(w, VR_DEVICE_HEAD);   /* track time was time since `track` */
     vrWorld_ClearTracker(w, VR_DEVICE_HAND);
+    vrSounds_Clear(&w->sounds);
     vrSplitmix_Seed(&w->rng, w->s.seed);
 }
 

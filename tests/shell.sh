@@ -179,6 +179,17 @@ if cmp -s "$work/h1/$f0" "$work/h2/$f0" && ! cmp -s "$work/d0/$f0" "$work/h1/$f0
     ! black "$work/h1/$f0" && cmp -s "$work/d0/$f0" "$work/h3/$f1"; then pass
 else fail "gen_head_track: the head's pose did not drive the view (h1 = h2, h2/1 black), or reset did not restore it (h3 = d0)"; fi
 
+# sound_log: a header and one line t,sound,volume,x,y,z,speed per impact
+# faster than sound_min_speed (the physics is tests/test_sound.c's), the
+# sound named by collision_sound; tools/vroc-sound renders it
+run_case gen_sound_log "$gold/sound_log.in"
+lines=$(grep -vc '^#' "$work/sound.log" 2>/dev/null)
+if [ "$(head -n 1 "$work/sound.log" 2>/dev/null)" = "# t,sound,volume,x,y,z,speed" ] && [ "$lines" -ge 3 ] &&
+    ! grep -v '^#' "$work/sound.log" | grep -qv '^[0-9.e-]*,bounce,[0-9.e-]*,[0-9.e-]*,[0-9.e-]*,[0-9.e-]*,[0-9.e-]*$' &&
+    [ "$(grep -vc '^#' "$work/quiet.log")" = 0 ] && "$build/vroc-sound" "$work/sound.log" "$work/sound.wav" &&
+    [ "$(head -c 4 "$work/sound.wav")" = RIFF ]; then pass
+else fail "gen_sound_log: sound.log ($lines events) or quiet.log (sound_min_speed = 100: none) or vroc-sound's WAV is wrong"; fi
+
 # a display that cannot open is an error of that line, and the shell goes on
 printf 'display\nsphere a\ndump\n' | (cd "$work" && VROC_RENDER_MODULE=/nonexistent/vroc-render.so timeout 60 "$vroc" \
     >"$tmp/out" 2>"$tmp/err")
