@@ -1,7 +1,8 @@
 # VROC — a plain Makefile, no configure step.
 #
 #   make          libvroc.a, vroc, vroc-gp, vroc-render.so in this folder, and
-#                 tools/vroc-sound (a sound log to WAV: libsndfile)
+#                 tools/vroc-sound (a sound log to WAV: libsndfile) and
+#                 tools/vroc-tracker (a track file published over LCM)
 #   make check    every test, built with ASan+UBSan (last line: N passed, M failed)
 #   make demo     runs scenes/demo.cmd and writes its frames and a picture
 #   make bench    prints the benchmarks (release build, bench/run.sh)
@@ -52,7 +53,7 @@ BENCH_SRC  := $(wildcard bench/bench_*.c)
 PRODUCTS = libvroc.a vroc vroc-gp vroc-render.so
 # C programs of tools/ (tools/src/NAME.c), built beside the others and
 # copied to tools/NAME
-TOOLS = vroc-sound
+TOOLS = vroc-sound vroc-tracker
 
 .PHONY: all deps check check-asan demo bench install clean
 .SECONDARY: $(LCM_GEN)
@@ -120,6 +121,10 @@ build/$(1)/vroc-render.so: src/render.c src/render.h | build/deps.stamp
 # tools/vroc-sound: a sound log rendered to a WAV (SPEC 8)
 build/$(1)/vroc-sound: build/$(1)/tools/src/vroc-sound.o
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(SND_LIBS) -lm
+
+# tools/vroc-tracker: a track file published in real time (SPEC 8)
+build/$(1)/vroc-tracker: build/$(1)/tools/src/vroc-tracker.o build/$(1)/libvroc.a
+	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
 
 # one runner: tests/main.c and every tests/*.c beside it (each test_*.c a suite)
 build/$(1)/tests/vroc-tests: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC)) build/$(1)/libvroc.a

@@ -248,8 +248,10 @@ void vrWorld_ClearTracker(vrWorld *w, vrDevice dev);
  * from now on.  The whole file is checked first: a bad line ("FILE:LINE:
  * message" in err) changes nothing. */
 int vrWorld_ReadTrack(vrWorld *w, const char *path, char *err, size_t errlen);
-/* simulation time now */
+/* simulation time now, and where the next frame ends (the bits the frame
+ * loop computes: a frame's end is not time + time_step rounded) */
 double vrWorld_Time(const vrWorld *w);
+double vrWorld_NextFrameEnd(const vrWorld *w);
 
 /* a track file's samples in order, each handed to fn (its time as in the
  * file); an error names the file and the line */
@@ -275,6 +277,28 @@ typedef struct vrSoundEvent {
 /* the sound events of the last frame vrWorld_Step ran, in time order
  * (valid until the next step); returns their count */
 int vrWorld_FrameSounds(const vrWorld *w, const vrSoundEvent **events);
+
+/* ---- live trackers (SPEC 8) --------------------------------------------- */
+/* Live trackers over LCM (SPEC 8): vroc.tracker_t messages on VROC_HEAD
+ * and VROC_HAND, each carrying its track time; track time 0 is the
+ * world's time at vrTrackers_Open.  Samples go into the world through
+ * vrWorld_PushSample (a malformed or out-of-order message is dropped). */
+typedef struct vrTrackers vrTrackers;
+int vrTrackers_Open(vrTrackers **out, vrWorld *w, const char *url, char *err, size_t errlen);
+void vrTrackers_Close(vrTrackers *tr);
+/* Takes what has arrived; then, for up to `deadline` s of wall time after
+ * each device's last message, waits until every device still sending has
+ * a sample at or after T (the end of the frame to come), so that the
+ * frame's poses are interpolated between the samples its track file
+ * would give.  A device silent for `deadline` is no longer waited for
+ * until it sends again.  Returns 1 while some device is sending. */
+int vrTrackers_Poll(vrTrackers *tr, double T, double deadline);
+/* waits up to `deadline` s for the first sample of any device: 1 if one came */
+int vrTrackers_WaitFirst(vrTrackers *tr, double deadline);
+/* messages dropped: undecodable, not finite, not unit, out of order */
+long long vrTrackers_Refused(const vrTrackers *tr);
+/* publishes sound events on VROC_SOUND (vroc.sound_t) */
+int vrTrackers_PublishSounds(vrTrackers *tr, const vrSoundEvent *ev, int n, const char *sound);
 
 /* ---- workers (SPEC 5) ---------------------------------------------------- */
 /* The loop of a worker process (`vroc-gp URL`): announces itself on the LCM

@@ -100,6 +100,8 @@ const Command sh_commands[] = {
     SETTING("sound_min_speed", "sound_min_speed = v", "the slowest impact that makes a sound, m/s", "0.5", G_EXT, K_NUM, R_GE, 0, BIG, sound_min_speed),
     {"sound_log", "sound_log = FILE", "write collision sound events into FILE (empty: stop writing)", "none", G_EXT, F_ASSIGN,
      K_TEXT, R_ANY, 0, VR_PATH_MAX - 1, 1, NULL, T_NONE, 0, 0, run_sound_log},
+    {"trackers", "trackers = URL", "take live head and hand samples from LCM at URL (empty: stop)", "none", G_EXT, F_ASSIGN,
+     K_WORD, R_ANY, 0, 255, 1, NULL, T_NONE, 0, 0, run_trackers},
     VERB("track", "track FILE", "play a track file (head and hand samples) from now, in simulation time", G_EXT, F_PATH, R_ANY, 0, 0, run_track),
 
     VIEW("resolution", "resolution = (w,h)", "frame size, pixels", "(640,512)", K_IVEC2, R_CLOSED, 16, 8192, width),

@@ -49,8 +49,12 @@ int sh_sound_frame(Shell *sh, char *err, size_t n)
     const vrSoundEvent *ev;
     const char *name = vrWorld_Settings(sh->world)->collision_sound;
     int k, count = vrWorld_FrameSounds(sh->world, &ev);
-    if (!sh->sound_log) return 0;
     if (!name[0]) name = SH_SOUND_DEFAULT;
+    if (sh->trackers && vrTrackers_PublishSounds(sh->trackers, ev, count, name) != 0) {
+        snprintf(err, n, "cannot publish the sound events on VROC_SOUND");
+        return -1;
+    }
+    if (!sh->sound_log) return 0;
     for (k = 0; k < count; k++) {
         put_number(sh->sound_log, ev[k].t, ',');
         fprintf(sh->sound_log, "%s,", name);

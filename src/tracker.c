@@ -37,6 +37,12 @@ void vrWorld_ClearTracker(vrWorld *w, vrDevice dev)
 
 double vrWorld_Time(const vrWorld *w) { return w->t; }
 
+/* loop.c's run_frame: frame times are t_base + k time_step */
+double vrWorld_NextFrameEnd(const vrWorld *w)
+{
+    return w->t_base + (double)(w->frames + 1 - w->frames_base) * w->s.time_step;
+}
+
 typedef struct Collected {
     vrTrack track[2];
     double t0;
