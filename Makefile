@@ -1,6 +1,8 @@
 # VROC — a plain Makefile, no configure step.
 #
-#   make          libvroc.a, vroc, vroc-gp, vroc-render.so in this folder
+#   make          libvroc.a, vroc, vroc-gp, vroc-render.so in this folder, and
+#                 tools/vroc-sound (a sound log to WAV: libsndfile) and
+#                 tools/vroc-tracker (a track file published over LCM)
 #   make check    every test, built with ASan+UBSan (last line: N passed, M failed)
 #   make demo     runs scenes/demo.cmd and writes its frames and a picture
 #   make bench    prints the benchmarks (release build, bench/run.sh)
@@ -33,6 +35,7 @@ SHELL_INCS = -Iinclude
 LIBS   = -lccd -lklu -llcm -ldl -lm
 RL_LIBS = -lreadline
 GL_LIBS = -lOSMesa
+SND_LIBS = -lsndfile
 
 rel_OPT     = -O3 -g -fno-math-errno -flto=auto
 rel_CFLAGS  = $(rel_OPT) -ffat-lto-objects
@@ -48,12 +51,15 @@ TEST_SRC   := $(wildcard tests/*.c)
 BENCH_SRC  := $(wildcard bench/bench_*.c)
 
 PRODUCTS = libvroc.a vroc vroc-gp vroc-render.so
+# C programs of tools/ (tools/src/NAME.c), built beside the others and
+# copied to tools/NAME
+TOOLS = vroc-sound vroc-tracker
 
 .PHONY: all deps check check-asan demo bench install clean
 .SECONDARY: $(LCM_GEN)
 .DELETE_ON_ERROR:
 
-all: $(PRODUCTS)
+all: $(PRODUCTS) $(patsubst %,tools/%,$(TOOLS))
 
 deps:
 	@sh tools/install-deps.sh
@@ -63,6 +69,9 @@ build/deps.stamp: tools/install-deps.sh
 	@mkdir -p build && touch $@
 
 $(PRODUCTS): %: build/rel/%
+	cp $< $@
+
+tools/%: build/rel/%
 	cp $< $@
 
 # LCM message types: C code generated at build time, never checked in.  The
@@ -109,6 +118,14 @@ build/$(1)/vroc-render.so: src/render.c src/render.h | build/deps.stamp
 	@mkdir -p $$(@D)
 	$$(CC) $$(WARN) $$(DEFS) $$(INCS) $$($(1)_CFLAGS) -fPIC -shared -o $$@ $$< $$($(1)_LDFLAGS) $$(GL_LIBS) -lm
 
+# tools/vroc-sound: a sound log rendered to a WAV (SPEC 8)
+build/$(1)/vroc-sound: build/$(1)/tools/src/vroc-sound.o
+	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(SND_LIBS) -lm
+
+# tools/vroc-tracker: a track file published in real time (SPEC 8)
+build/$(1)/vroc-tracker: build/$(1)/tools/src/vroc-tracker.o build/$(1)/libvroc.a
+	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
+
 # one runner: tests/main.c and every tests/*.c beside it (each test_*.c a suite)
 build/$(1)/tests/vroc-tests: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC)) build/$(1)/libvroc.a
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
@@ -117,8 +134,10 @@ build/$(1)/tests/vroc-tests: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC)) build/
 build/$(1)/bench/%: build/$(1)/bench/%.o build/$(1)/libvroc.a
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
 
-$(1)-all: build/$(1)/libvroc.a build/$(1)/vroc build/$(1)/vroc-gp build/$(1)/vroc-render.so $$($(1)_TESTS)
--include $$($(1)_OBJ:.o=.d) $$(patsubst %.c,build/$(1)/%.d,$$(SHELL_SRC) $$(TEST_SRC) $$(BENCH_SRC) shell/gp_main.c)
+$(1)-all: build/$(1)/libvroc.a build/$(1)/vroc build/$(1)/vroc-gp build/$(1)/vroc-render.so $$($(1)_TESTS) \
+          $$(patsubst %,build/$(1)/%,$$(TOOLS))
+-include $$($(1)_OBJ:.o=.d) $$(patsubst %.c,build/$(1)/%.d,$$(SHELL_SRC) $$(TEST_SRC) $$(BENCH_SRC) shell/gp_main.c) \
+         $$(patsubst %,build/$(1)/tools/src/%.d,$$(TOOLS))
 endef
 $(foreach v,rel asan,$(eval $(call VARIANT,$(v))))
 
@@ -135,9 +154,9 @@ demo: all
 
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/vroc $(DESTDIR)$(PREFIX)/share/man/man1
-	install -m 755 vroc vroc-gp $(DESTDIR)$(PREFIX)/bin/
+	install -m 755 vroc vroc-gp $(patsubst %,tools/%,$(TOOLS)) $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 vroc-render.so $(DESTDIR)$(PREFIX)/lib/vroc/
 	install -m 644 man/vroc.1 $(DESTDIR)$(PREFIX)/share/man/man1/
 
 clean:
-	rm -rf build $(PRODUCTS)
+	rm -rf build $(PRODUCTS) $(patsubst %,tools/%,$(TOOLS))

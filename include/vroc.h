@@ -81,11 +81,12 @@ typedef struct vrSettings {
     int gps;                  /* worker processes, 0 = serial */
     vrDistribution distribution;
     char lcm_url[256];        /* udpm://239.255.76.67:7667?ttl=0 */
-    char collision_sound[256];/* kept for the sound server (not played yet) */
+    char collision_sound[256];/* the sound of collisions (SPEC 8): a file or a built-in; "" = bounce */
     double collision_vol;     /* 0..1, 1.0 */
     double default_friction;  /* 0..10, 0: the friction objects created after it start with */
     double default_elasticity;/* 0..1, 1: the elasticity objects created after it start with */
     double contact_step;      /* > 0 .. 0.1 s, 1/240: the longest step between island steps (SPEC 7) */
+    double sound_min_speed;   /* >= 0, 0.5 m/s: the slowest impact that sounds (SPEC 8) */
 } vrSettings;
 
 vrSettings vrSettings_Default(void);
@@ -215,6 +216,89 @@ int vrDisplay_WriteFrames(const vrDisplay *d, const char *dir, long frame, char 
 /* the last render's pixels: eye 0 left, 1 right; RGB rows top to bottom */
 const unsigned char *vrDisplay_Pixels(const vrDisplay *d, int eye, int *width, int *height);
 const char *vrDisplay_RendererName(const vrDisplay *d);
+
+/* ---- trackers: the head and the hand (SPEC 8) ------------------------- */
+typedef enum vrDevice { VR_DEVICE_HEAD, VR_DEVICE_HAND } vrDevice;
+#define VR_BUTTON_TRIGGER 1u
+#define VR_BUTTON_RESELECT 2u
+
+/* One tracker sample: a time, a position (m) and a unit quaternion (w, x,
+ * y, z; body to world), and for the hand a button mask.  The head's frame
+ * has the eyes at its origin, looking along its +y with its +z up (the
+ * identity looks along the world's +y, upright); the hand points along
+ * its +y. */
+typedef struct vrTrackerSample {
+    double t;
+    double position[3];
+    double orientation[4];
+    unsigned buttons;
+} vrTrackerSample;
+
+/* A sample of dev at simulation time s->t (not before the device's last
+ * sample: -1 and a message).  This is the one way samples come in: track
+ * files, live trackers and a window's mouse all push here. */
+int vrWorld_PushSample(vrWorld *w, vrDevice dev, const vrTrackerSample *s, char *err, size_t errlen);
+/* dev's pose at the world's current time, interpolated between samples
+ * (linear, slerp) and held after the last; -1 when dev has no sample */
+int vrWorld_TrackerPose(const vrWorld *w, vrDevice dev, vrTrackerSample *out);
+/* forgets dev's samples (the head: the view is the settings' again) */
+void vrWorld_ClearTracker(vrWorld *w, vrDevice dev);
+/* `track FILE`: the file's samples, their times taken from now (the
+ * world's simulation time), replacing what the devices it names had
+ * from now on.  The whole file is checked first: a bad line ("FILE:LINE:
+ * message" in err) changes nothing. */
+int vrWorld_ReadTrack(vrWorld *w, const char *path, char *err, size_t errlen);
+/* simulation time now, and where the next frame ends (the bits the frame
+ * loop computes: a frame's end is not time + time_step rounded) */
+double vrWorld_Time(const vrWorld *w);
+double vrWorld_NextFrameEnd(const vrWorld *w);
+
+/* a track file's samples in order, each handed to fn (its time as in the
+ * file); an error names the file and the line */
+typedef int (*vrTrackSampleFn)(void *user, vrDevice dev, const vrTrackerSample *s, char *err, size_t errlen);
+int vrTrackFile_Read(const char *path, vrTrackSampleFn fn, void *user, char *err, size_t errlen);
+
+/* the view the head pose gives: the eyes at its position, looking along
+ * its +y, up its +z, converging as far away as view's focal distance
+ * (focal, or |look - eye| when 0) */
+void vrView_FromHead(vrView *view, const vrTrackerSample *head);
+
+/* ---- collision sounds (SPEC 8) ----------------------------------------- */
+/* One impact faster than sound_min_speed: its time, volume
+ * (collision_vol * min(1, speed / 10 m/s)), the point where its impulse
+ * acts, its approach speed and the pair.  At most one per pair per 0.1 s. */
+typedef struct vrSoundEvent {
+    double t;
+    double volume;
+    double position[3];
+    double speed;
+    vrObjectId a, b;
+} vrSoundEvent;
+/* the sound events of the last frame vrWorld_Step ran, in time order
+ * (valid until the next step); returns their count */
+int vrWorld_FrameSounds(const vrWorld *w, const vrSoundEvent **events);
+
+/* ---- live trackers (SPEC 8) --------------------------------------------- */
+/* Live trackers over LCM (SPEC 8): vroc.tracker_t messages on VROC_HEAD
+ * and VROC_HAND, each carrying its track time; track time 0 is the
+ * world's time at vrTrackers_Open.  Samples go into the world through
+ * vrWorld_PushSample (a malformed or out-of-order message is dropped). */
+typedef struct vrTrackers vrTrackers;
+int vrTrackers_Open(vrTrackers **out, vrWorld *w, const char *url, char *err, size_t errlen);
+void vrTrackers_Close(vrTrackers *tr);
+/* Takes what has arrived; then, for up to `deadline` s of wall time after
+ * each device's last message, waits until every device still sending has
+ * a sample at or after T (the end of the frame to come), so that the
+ * frame's poses are interpolated between the samples its track file
+ * would give.  A device silent for `deadline` is no longer waited for
+ * until it sends again.  Returns 1 while some device is sending. */
+int vrTrackers_Poll(vrTrackers *tr, double T, double deadline);
+/* waits up to `deadline` s for the first sample of any device: 1 if one came */
+int vrTrackers_WaitFirst(vrTrackers *tr, double deadline);
+/* messages dropped: undecodable, not finite, not unit, out of order */
+long long vrTrackers_Refused(const vrTrackers *tr);
+/* publishes sound events on VROC_SOUND (vroc.sound_t) */
+int vrTrackers_PublishSounds(vrTrackers *tr, const vrSoundEvent *ev, int n, const char *sound);
 
 /* ---- workers (SPEC 5) ---------------------------------------------------- */
 /* The loop of a worker process (`vroc-gp URL`): announces itself on the LCM

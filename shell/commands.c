@@ -74,7 +74,7 @@ const Command sh_commands[] = {
     SETTING("max_angular", "max_angular = v", "maximum angular speed, rad/s", "4", G_SYSTEM, K_NUM, R_GT, 0, BIG, max_angular),
     SETTING("force", "force = (x,y,z) m", "global force: direction, and magnitude m/s^2 on every dynamic object", "(0,0,-1) 0", G_SYSTEM, K_AXIS, R_GE, 0, BIG, force_dir),
     VERB("gravity", "gravity", "the same as force = (0,0,-1) 9.8", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_gravity),
-    TEXT_SETTING("collision_sound", "collision_sound = s", "sound for collisions (the rest of the line; kept, not played)", "(none)", G_SYSTEM, K_TEXT, 1, 255, collision_sound),
+    TEXT_SETTING("collision_sound", "collision_sound = s", "sound of collisions: a sound file or a built-in (the rest of the line)", "bounce", G_SYSTEM, K_TEXT, 1, 255, collision_sound),
     SETTING("collision_vol", "collision_vol = v", "volume of the collision sound", "1", G_SYSTEM, K_NUM, R_CLOSED, 0, 1, collision_vol),
     SETTING("default_friction", "default_friction = mu", "friction of the objects created after it", "0", G_SYSTEM, K_NUM, R_CLOSED, 0, 10, default_friction),
     SETTING("default_elasticity", "default_elasticity = e", "elasticity of the objects created after it", "1", G_SYSTEM, K_NUM, R_CLOSED, 0, 1, default_elasticity),
@@ -96,6 +96,13 @@ const Command sh_commands[] = {
      T_SETTINGS, offsetof(vrSettings, seed), 0, run_setting},
     VERB("random", "random N", "add N random dynamic objects r0, r1, ... (thesis table 5.6)", G_EXT, F_INT, R_CLOSED, 1, 10000, run_random),
     SETTING("room", "room = s", "put later random objects in a closed room of side s, m (0: none)", "0", G_EXT, K_NUM, R_CLOSED, 0, 1e6, room),
+
+    SETTING("sound_min_speed", "sound_min_speed = v", "the slowest impact that makes a sound, m/s", "0.5", G_EXT, K_NUM, R_GE, 0, BIG, sound_min_speed),
+    {"sound_log", "sound_log = FILE", "write collision sound events into FILE (empty: stop writing)", "none", G_EXT, F_ASSIGN,
+     K_TEXT, R_ANY, 0, VR_PATH_MAX - 1, 1, NULL, T_NONE, 0, 0, run_sound_log},
+    {"trackers", "trackers = URL", "take live head and hand samples from LCM at URL (empty: stop)", "none", G_EXT, F_ASSIGN,
+     K_WORD, R_ANY, 0, 255, 1, NULL, T_NONE, 0, 0, run_trackers},
+    VERB("track", "track FILE", "play a track file (head and hand samples) from now, in simulation time", G_EXT, F_PATH, R_ANY, 0, 0, run_track),
 
     VIEW("resolution", "resolution = (w,h)", "frame size, pixels", "(640,512)", K_IVEC2, R_CLOSED, 16, 8192, width),
     VIEW("eye", "eye = (x,y,z)", "head (eye) position, m", "(0,-8,3)", K_VEC3, R_ANY, 0, 0, eye),

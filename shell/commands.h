@@ -114,6 +114,13 @@ int run_step(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_restart(Shell *sh, const Stmt *st, char *err, size_t n);
 /* frames.c */
 int run_display(Shell *sh, const Stmt *st, char *err, size_t n);
+/* sound.c */
+int run_sound_log(Shell *sh, const Stmt *st, char *err, size_t n);
+/* track.c */
+int run_track(Shell *sh, const Stmt *st, char *err, size_t n);
+int run_trackers(Shell *sh, const Stmt *st, char *err, size_t n);
+/* the view a frame is drawn with: the settings', or the tracked head's */
+vrView sh_current_view(const Shell *sh);
 /* source.c */
 int run_read(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_quit(Shell *sh, const Stmt *st, char *err, size_t n);

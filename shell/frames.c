@@ -15,8 +15,10 @@ int sh_display_open(Shell *sh, char *err, size_t n)
 int sh_display_draw(Shell *sh, char *err, size_t n)
 {
     vrStats st;
+    vrView view;
     if (!sh->display) return 0;
-    if (vrDisplay_Render(sh->display, sh->world, &sh->view, err, n) != 0) return -1;
+    view = sh_current_view(sh);
+    if (vrDisplay_Render(sh->display, sh->world, &view, err, n) != 0) return -1;
     if (!sh->frames_dir[0]) return 0;
     vrWorld_GetStats(sh->world, &st);
     return vrDisplay_WriteFrames(sh->display, sh->frames_dir, st.frames, err, n);

@@ -105,6 +105,8 @@ int main(int argc, char **argv)
         else read_stdin(&sh);
     }
     sh_display_close(&sh);
+    sh_sound_close(&sh);
+    vrTrackers_Close(sh.trackers);
     vrWorld_Destroy(sh.world);
     if (fflush(stdout) != 0) return 1;
     return sh.errors ? 1 : 0;

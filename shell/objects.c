@@ -142,6 +142,7 @@ int run_show(Shell *sh, const Stmt *st, char *err, size_t n)
     vrObjectId id = vrWorld_FindObject(sh->world, st->name);
     vrObjectDef d;
     int i;
+    if (sh_show_tracker(sh, st->name)) return 0;   /* head, hand: reserved (SPEC 8) */
     if (id == VR_NO_OBJECT || vrWorld_GetObjectDef(sh->world, id, &d) != 0) return no_such_object(sh, st->name, err, n);
     printf("name = %s\ntype = %s\n", st->name, type_names[d.type]);
     for (i = 0; i < sh_ncommands; i++) {

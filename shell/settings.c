@@ -56,6 +56,7 @@ int run_reset(Shell *sh, const Stmt *st, char *err, size_t n)
     memcpy(sh->view.eye, d.eye, sizeof d.eye);
     memcpy(sh->view.look, d.look, sizeof d.look);
     memcpy(sh->view.up, d.up, sizeof d.up);
+    vrWorld_ClearTracker(sh->world, VR_DEVICE_HEAD);   /* the head no longer moves the view */
     return 0;
 }
 

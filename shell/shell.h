@@ -43,6 +43,8 @@ typedef struct Shell {
     int running;                 /* a real-time `start` is going on */
     char run_origin[VR_PATH_MAX + 32]; /* "FILE:LINE" of that `start`, for its errors */
     double next_frame;           /* monotonic seconds when the next real-time frame is due */
+    vrTrackers *trackers;        /* `trackers = URL`, NULL: none (track.c) */
+    FILE *sound_log;             /* `sound_log = FILE`, NULL: none (sound.c) */
     long errors;                 /* errors so far: the exit status */
     Source *src;                 /* the innermost source being read */
 } Shell;
@@ -75,6 +77,17 @@ double sh_frame_wait(const Shell *sh);
 /* runs the due real-time frame; an error stops the run and is returned */
 int sh_tick(Shell *sh, char *err, size_t n);
 extern volatile sig_atomic_t sh_interrupted;   /* SIGINT: stop a long `step` */
+
+/* track.c: live trackers (SPEC 8) */
+#define SH_TRACKER_DEADLINE 1.0      /* s of wall time a script waits for a silent tracker */
+#define SH_TRACKER_FIRST_WAIT 5.0    /* s a script's `trackers =` waits for the first sample */
+void sh_trackers_before_frame(Shell *sh);
+/* `show head`, `show hand`: 1 when name is one of them (printed) */
+int sh_show_tracker(Shell *sh, const char *name);
+
+/* sound.c: the collision sound log (SPEC 8) */
+int sh_sound_frame(Shell *sh, char *err, size_t n);
+void sh_sound_close(Shell *sh);
 
 /* frames.c: the frames drawn and written (SPEC 4) */
 int sh_display_open(Shell *sh, char *err, size_t n);

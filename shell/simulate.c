@@ -21,7 +21,9 @@ static double now_s(void)
 
 static int one_frame(Shell *sh, char *err, size_t n)
 {
+    sh_trackers_before_frame(sh);
     if (vrWorld_Step(sh->world, 1, err, n) != 0) return -1;
+    if (sh_sound_frame(sh, err, n) != 0) return -1;
     return sh_display_draw(sh, err, n);
 }
 

@@ -41,6 +41,7 @@ vrSettings vrSettings_Default(void)
     s.collision_vol = 1.0;
     s.default_elasticity = 1.0;
     s.contact_step = 1.0 / 240;
+    s.sound_min_speed = 0.5;
     return s;
 }
 
@@ -73,6 +74,7 @@ int vrSettings_Check(const vrSettings *s, char *err, size_t n)
     if (bad_range(s->default_elasticity, 0, 1, 0))
         return out_of_range(err, n, "default_elasticity", "0..1", s->default_elasticity);
     if (bad_range(s->contact_step, 1e-5, 0.1, 0)) return out_of_range(err, n, "contact_step", "1e-5..0.1", s->contact_step);
+    if (bad_range(s->sound_min_speed, 0, 1e9, 0)) return out_of_range(err, n, "sound_min_speed", ">= 0", s->sound_min_speed);
     return 0;
 }
 

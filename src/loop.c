@@ -119,6 +119,7 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
             return r;
         }
         w->subframes += ev.t > f->ts ? vrSchedule_FirstPointAtOrAfter(&g, ev.t) : 0;
+        if (vrSounds_Note(&w->sounds, &ev, &w->s) != 0) return vrGeom_Fail(err, n, "out of memory");
         if (answered_together(w, f, &ev) && (r = vrIsland_Instant(w, ev.t, ev.a, ev.b, err, n)) != 1) {
             if (r != 0) return r;
             reach_changed(w, &w->update, p);
@@ -150,6 +151,7 @@ static int run_frame(vrWorld *w, char *err, size_t n)
     f.instant_t = w->instant_t;
     f.instant = w->instant;
     w->subframes = 0;
+    vrSounds_Frame(&w->sounds);
     vrReach_Frame(&w->reach, w->dyn, w->ndyn, f.ts, f.T, &p.flight);
     for (k = 0; k < steps; k++) {
         double at = contact_point(w->t, f.T, k, steps), end = contact_point(w->t, f.T, k + 1, steps);

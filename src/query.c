@@ -113,3 +113,9 @@ void vrWorld_GetStats(const vrWorld *cw, vrStats *st)
     st->sim_ms = w->sim_ms;
     st->render_ms = w->render_ms;
 }
+
+int vrWorld_FrameSounds(const vrWorld *w, const vrSoundEvent **events)
+{
+    *events = w->sounds.ev;
+    return w->sounds.n;
+}

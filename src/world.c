@@ -9,6 +9,7 @@
 #include "config.h"
 #include "world_state.h"
 #include "parallel/spawn.h"
+#include "tracker.h"
 
 vrWorld *vrWorld_Create(void)
 {
@@ -48,6 +49,8 @@ void vrWorld_Destroy(vrWorld *w)
     vrTouches_Free(&w->touches);
     vrWarm_Free(&w->warm);
     vrWarm_Free(&w->warm_next);
+    vrWorld_FreeTrackers(w);
+    vrSounds_Free(&w->sounds);
     free(w);
 }
 
@@ -64,6 +67,9 @@ void vrWorld_Restart(vrWorld *w)
     w->params_dirty = 0;
     w->instant = 0;
     w->instant_t = -INFINITY;
+    vrWorld_ClearTracker(w, VR_DEVICE_HEAD);   /* track time was time since `track` */
+    vrWorld_ClearTracker(w, VR_DEVICE_HAND);
+    vrSounds_Clear(&w->sounds);
     vrSplitmix_Seed(&w->rng, w->s.seed);
 }
 

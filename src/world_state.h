@@ -25,6 +25,8 @@
 #include "reach.h"
 #include "splitmix.h"
 #include "table.h"
+#include "sound.h"
+#include "track.h"
 #include "warm.h"
 
 typedef struct vrSgp vrSgp;
@@ -63,6 +65,8 @@ struct vrWorld {
     long long island_steps;  /* island steps that solved an island */
     long long island_contacts; /* contacts those steps solved */
     double frame_ms, sim_ms, render_ms;
+    vrSounds sounds;         /* this frame's collision sounds (sound.c, SPEC 8) */
+    vrTrack track[2];        /* the head and the hand, by vrDevice (tracker.c, SPEC 8) */
     /* `random` */
     int random_next;
     vrSplitmix rng;

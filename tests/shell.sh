@@ -171,6 +171,25 @@ else fail "gen_views: eye/look/up did not change the frame, or reset did not res
 if cmp -s "$work/e1/$f" "$work/e2/$f" && ! cmp -s "$work/e1/$f" "$work/e3/$f"; then pass
 else fail "gen_views: see_through = 2 did not hide the real = 1 object, or = 0 did not show it (e1, e2, e3)"; fi
 
+# a tracked head drives the view; reset gives it back (tests/shell/head_track.in)
+run_case gen_head_track "$gold/head_track.in"
+f0=frame-000000-left.ppm f1=frame-000001-left.ppm
+black() { [ "$(tail -c +14 "$1" | tr -d '\000' | wc -c)" = 0 ]; }
+if cmp -s "$work/h1/$f0" "$work/h2/$f0" && ! cmp -s "$work/d0/$f0" "$work/h1/$f0" && black "$work/h2/$f1" &&
+    ! black "$work/h1/$f0" && cmp -s "$work/d0/$f0" "$work/h3/$f1"; then pass
+else fail "gen_head_track: the head's pose did not drive the view (h1 = h2, h2/1 black), or reset did not restore it (h3 = d0)"; fi
+
+# sound_log: a header and one line t,sound,volume,x,y,z,speed per impact
+# faster than sound_min_speed (the physics is tests/test_sound.c's), the
+# sound named by collision_sound; tools/vroc-sound renders it
+run_case gen_sound_log "$gold/sound_log.in"
+lines=$(grep -vc '^#' "$work/sound.log" 2>/dev/null)
+if [ "$(head -n 1 "$work/sound.log" 2>/dev/null)" = "# t,sound,volume,x,y,z,speed" ] && [ "$lines" -ge 3 ] &&
+    ! grep -v '^#' "$work/sound.log" | grep -qv '^[0-9.e-]*,bounce,[0-9.e-]*,[0-9.e-]*,[0-9.e-]*,[0-9.e-]*,[0-9.e-]*$' &&
+    [ "$(grep -vc '^#' "$work/quiet.log")" = 0 ] && "$build/vroc-sound" "$work/sound.log" "$work/sound.wav" &&
+    [ "$(head -c 4 "$work/sound.wav")" = RIFF ]; then pass
+else fail "gen_sound_log: sound.log ($lines events) or quiet.log (sound_min_speed = 100: none) or vroc-sound's WAV is wrong"; fi
+
 # a display that cannot open is an error of that line, and the shell goes on
 printf 'display\nsphere a\ndump\n' | (cd "$work" && VROC_RENDER_MODULE=/nonexistent/vroc-render.so timeout 60 "$vroc" \
     >"$tmp/out" 2>"$tmp/err")

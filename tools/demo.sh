@@ -2,7 +2,9 @@
 # make demo: runs scenes/demo.cmd through ./vroc, writing its stereo frames
 # into demo/frames (40 pairs of 480x384, 44 MB), then makes demo/demo.png (a
 # contact sheet of the left eye) and demo/demo-anaglyph.png (the last frame
-# in red-cyan) with tools/contact-sheet, and says where they are.
+# in red-cyan) with tools/contact-sheet, and says where they are.  Then the
+# basketball scene's sound track (SPEC 8): scenes/basketball.cmd run with a
+# sound log, rendered by tools/vroc-sound into demo/basketball.wav.
 # Usage: tools/demo.sh   (from anywhere; needs ./vroc and ./vroc-render.so: make)
 set -eu
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -22,3 +24,8 @@ pairs=$(ls "$out/frames" | grep -c -- '-right\.ppm$' || true)
 echo "demo: $pairs stereo frames ($(du -sh "$out/frames" | cut -f1)) in $out/frames"
 echo "demo: look at $out/demo.png (left eye, every few frames)"
 echo "demo:     and $out/demo-anaglyph.png (last frame, red-cyan glasses)"
+[ -x "$top/tools/vroc-sound" ] || die "no $top/tools/vroc-sound: run make first"
+printf 'sound_log = %s\nread %s\n' "$out/basketball.log" "$top/scenes/basketball.cmd" | "$top/vroc" ||
+    die "vroc failed on scenes/basketball.cmd"
+"$top/tools/vroc-sound" "$out/basketball.log" "$out/basketball.wav" || die "tools/vroc-sound failed"
+echo "demo: listen to $out/basketball.wav ($(($(grep -vc '^#' "$out/basketball.log"))) bounces of scenes/basketball.cmd)"

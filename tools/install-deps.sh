@@ -24,6 +24,7 @@ need iproute2           command -v ip
 need util-linux         command -v unshare
 need groff-base         command -v groff
 need man-db             command -v man
+need libsndfile1-dev    have_file /usr/include/sndfile.h
 
 [ -z "$missing" ] && exit 0
 
