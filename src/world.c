@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "config.h"
-#include "world_state.h"
+#include "save.h"
 #include "parallel/spawn.h"
 
 vrWorld *vrWorld_Create(void)
@@ -48,6 +48,7 @@ void vrWorld_Destroy(vrWorld *w)
     vrTouches_Free(&w->touches);
     vrWarm_Free(&w->warm);
     vrWarm_Free(&w->warm_next);
+    vrSave_Free(w);
     free(w);
 }
 
@@ -65,6 +66,8 @@ void vrWorld_Restart(vrWorld *w)
     w->instant = 0;
     w->instant_t = -INFINITY;
     vrSplitmix_Seed(&w->rng, w->s.seed);
+    vrSave_Free(w);
+    w->warm.n = 0;
 }
 
 const vrSettings *vrWorld_Settings(const vrWorld *w) { return &w->s; }
