@@ -2,12 +2,9 @@
  *   sections            every piece of state, in the order it is written
  *   vrWorld_WriteSave   the file: definitions (the shell's) and sections
  *   vrWorld_ReadState   one `state` line
- *   vrSave_Resume       what the start puts back
  */
-#include <stdlib.h>
 #include <string.h>
 #include "owners.h"
-#include "saved.h"
 #include "save_sections.h"
 
 #define STATE_KEYS "x v q L rest hit contact island"
@@ -21,6 +18,7 @@ static const vrSaveSection sections[] = {
     {"warm", "a b h n points " POINT_KEYS " friction twist", 0, vrSave_WriteWarm, vrSave_ReadWarm},
     {"pending", "obj t raw " STATE_KEYS, 0, vrSave_WritePending, vrSave_ReadPending},
     {"gap", "", 0, NULL, vrSave_ReadGap},   /* written by the driver, for a deleted object's id */
+    {"live", "", 0, vrSave_WriteLive, vrSave_ReadLive},   /* last: the saved run goes live */
 };
 #define NSECTIONS ((int)(sizeof sections / sizeof sections[0]))
 
@@ -87,72 +85,4 @@ int vrWorld_ReadState(vrWorld *w, vrObjectId selected, const char *text, size_t 
         return -1;
     if (s->read(w, selected, &l, err, n) != 0) return -1;
     return vrSaveLine_Done(&l, err, n);
-}
-
-vrResume *vrSave_Resumed(vrWorld *w)
-{
-    if (!w->resume && (w->resume = calloc(1, sizeof *w->resume))) vrUpdate_Init(&w->resume->pending);
-    return w->resume;
-}
-
-void vrSave_Free(vrWorld *w)
-{
-    if (!w->resume) return;
-    vrUpdate_Free(&w->resume->pending);
-    free(w->resume);
-    w->resume = NULL;
-}
-
-/* the bodies read let go of their saved states; 1 when there were any */
-static int release_saved(vrWorld *w)
-{
-    int i, any = 0;
-    for (i = 0; i < w->table.n; i++) {
-        vrObject *o = w->table.obj[i];
-        if (!o || !o->saved || !o->live) continue;
-        o->overlap_owed = o->saved->overlap_owed;
-        free(o->saved);
-        o->saved = NULL;
-        any = 1;
-    }
-    return any;
-}
-
-/* the owners' unheard states: the saved ones, and those of objects that
- * went live placed by their definitions (added to the file by hand) */
-static int merge_pending(vrWorld *w, const vrResume *r)
-{
-    int i, k = 0;
-    for (i = 0; i < w->pending.n; i++) {
-        const vrObject *o = vrWorld_Object(w, w->pending.body[i].id);
-        if (o && !o->saved) w->pending.body[k++] = w->pending.body[i];
-    }
-    w->pending.n = k;
-    for (i = 0; i < r->pending.n; i++) {
-        vrBodyState *st;
-        vrObject *o = vrWorld_Object(w, r->pending.body[i].id);
-        if (!o || !o->live) continue;
-        if (!(st = vrUpdate_Body(&w->pending, &o->body, w->t))) return -1;
-        *st = r->pending.body[i];
-    }
-    return 0;
-}
-
-int vrSave_Resume(vrWorld *w)
-{
-    vrResume *r = w->resume;
-    int i;
-    if (r && merge_pending(w, r) != 0) return -1;
-    if (release_saved(w)) {
-        w->may_rest = 0;                 /* rest.c counts the resting at frame ends */
-        for (i = 0; i < w->table.n; i++)
-            if (w->table.obj[i] && w->table.obj[i]->live) w->may_rest += w->table.obj[i]->body.resting;
-    }
-    if (!r) return 0;
-    if (r->warm) {
-        vrWarm_Sort(&w->warm);
-        w->warm.structure = w->structure;
-    }
-    vrSave_Free(w);
-    return 0;
 }

@@ -21,12 +21,7 @@
 
 #include "world_state.h"
 #include "save_line.h"
-
-/* what a read file leaves for the next start */
-typedef struct vrResume {
-    vrUpdate pending;        /* the states the owners had not heard of when it was saved */
-    int warm;                /* the warm starts read belong to the next island step */
-} vrResume;
+#include "resume.h"
 
 /* one piece of state: written after each object's definition (per_object)
  * or once after all objects; read from `state WORD ...` (id: the selected
@@ -39,11 +34,5 @@ typedef struct vrSaveSection {
     void (*write)(vrWorld *w, int id, FILE *out);
     int (*read)(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
 } vrSaveSection;
-
-/* the start, after the objects went live: what was read is put back */
-int vrSave_Resume(vrWorld *w);
-void vrSave_Free(vrWorld *w);
-/* w->resume, made when missing; NULL when out of memory */
-vrResume *vrSave_Resumed(vrWorld *w);
 
 #endif

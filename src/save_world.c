@@ -4,10 +4,12 @@
  *   counters  the statistics that count (SPEC 1.3), continued from here
  *   random    `random`'s numbering and its stream's state
  *   gap       an id that a deleted object left
+ *   live      the end: the objects go live as the saving run's are
  */
 #include <math.h>
 #include "grow.h"
 #include "save_sections.h"
+#include "start.h"
 
 void vrSave_WriteClock(vrWorld *w, int id, FILE *out)
 {
@@ -123,5 +125,21 @@ int vrSave_ReadGap(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n)
         return -1;
     }
     t->obj[t->n++] = NULL;
+    return 0;
+}
+
+void vrSave_WriteLive(vrWorld *w, int id, FILE *out)
+{
+    (void)w, (void)id;
+    fputs("state live\n", out);
+}
+
+/* An edit, a deletion, `start`'s rest test act on live objects: the
+ * saving run's are, so the reader's must be before what follows. */
+int vrSave_ReadLive(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n)
+{
+    (void)id, (void)l;
+    if (vrWorld_GoLive(w, err, n) != 0) return -1;
+    w->started = 1;                    /* no more state lines: this run is the saved one now */
     return 0;
 }

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "config.h"
-#include "save.h"
+#include "resume.h"
 #include "parallel/spawn.h"
 
 vrWorld *vrWorld_Create(void)

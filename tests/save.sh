@@ -154,6 +154,33 @@ after "step 10" "delete r4" "cube later" "  size = (0.1, 0.05, 0.1)" "  translat
 two_runs edits 10 after.cmd
 if [ "$(grep -c '^state gap$' edits.vroc)" = 2 ]; then pass; else fail "edits: two deleted ids should give two gaps"; fi
 
+# a rough room: friction, a superquadric, a resting body deleted at once
+# after the save (its island wakes in both runs: the reader's objects
+# are live when the file ends, `state live`)
+cat >rough.cmd <<'S'
+time_step = 0.03
+collision_dist = 0.03
+gravity
+default_friction = 0.4
+default_elasticity = 0.3
+seed = 5
+room = 3
+random 10
+superquadric sq
+  exp1 = 0.5
+  exp2 = 1.5
+  a1 = 0.1
+  a2 = 0.15
+  a3 = 0.1
+  translate = (0.2, 0.3, 1.2)
+  angular_vel = (1, 2, 0.5)
+S
+after "delete r3" "step 30" "sphere nw" "  radius = 0.05" "  translate = (0, 0, 1.3)" "step 30" "dump" "stats"
+two_runs rough 45 after.cmd
+if grep -q '^  state body.* rest=1 ' rough.vroc; then pass; else fail "rough: nothing rests at the save"; fi
+after "start" "dump" "stats"
+two_runs rough 90 after.cmd
+
 # ---- a serial save continued with two workers ----------------------------------
 after "gps = 2" "lcm_url = memq://" "step 40" "dump" "stats"
 two_runs pile 30 after.cmd
