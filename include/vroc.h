@@ -175,6 +175,20 @@ int vrWorld_WriteStats(const vrWorld *w, FILE *out);
 /* shortest decimal that reads back to the same double, -0 as 0 */
 void vrFormatDouble(char buf[32], double x);
 
+/* ---- save (SPEC 11) ------------------------------------------------------ */
+/* def(ctx, out, id) writes object id's definition (the commands that make
+ * it); the library writes the rest of the state as `state` lines.  The
+ * pair owners are made anew at the next start, as the file's reader makes
+ * them: both runs go on the same bits and the same counts.  -1 when out
+ * fails. */
+typedef void (*vrDefWriter)(void *ctx, FILE *out, vrObjectId id);
+int vrWorld_WriteSave(vrWorld *w, FILE *out, vrDefWriter def, void *ctx);
+/* one `state WORD key=value ...` line (text: what follows `state`) of a
+ * saved file; selected: the object a `state body` belongs to */
+int vrWorld_ReadState(vrWorld *w, vrObjectId selected, const char *text, size_t len, char *err, size_t errlen);
+/* the shortest decimal that reads back to the same bits: -0 kept, inf as inf */
+void vrFormatExact(char buf[32], double x);
+
 /* ---- drawing ----------------------------------------------------------- */
 /* The drawing mesh of an object, in its body frame: vertex positions and
  * smooth normals as xyz triples, faces as polygons (counter-clockwise seen

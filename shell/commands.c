@@ -80,6 +80,8 @@ const Command sh_commands[] = {
     SETTING("default_elasticity", "default_elasticity = e", "elasticity of the objects created after it", "1", G_SYSTEM, K_NUM, R_CLOSED, 0, 1, default_elasticity),
     SETTING("contact_step", "contact_step = s", "longest step between island steps, s (contacts solved together)", "0.0041667", G_EXT, K_NUM, R_CLOSED, 1e-5, 0.1, contact_step),
 
+    VERB("save", "save FILE", "write the whole state as a script a fresh vroc reads to go on bit for bit", G_EXT, F_PATH, R_ANY, 0, 0, run_save),
+    VERB("state", "state WORD ...", "a saved file's line: one piece of a run's state (written by save)", G_EXT, F_PATH, R_ANY, 0, 0, run_state),
     VERB("dump", "dump", "print every object's state (one CSV line each, by name)", G_EXT, F_BARE, R_ANY, 0, 0, run_dump),
     VERB("stats", "stats", "print the statistics (one line of key=value)", G_EXT, F_BARE, R_ANY, 0, 0, run_stats),
     VERB("show", "show NAME", "print the attributes of object NAME", G_EXT, F_NAME, R_ANY, 0, 0, run_show),

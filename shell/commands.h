@@ -121,6 +121,9 @@ int run_track(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_trackers(Shell *sh, const Stmt *st, char *err, size_t n);
 /* the view a frame is drawn with: the settings', or the tracked head's */
 vrView sh_current_view(const Shell *sh);
+/* save.c */
+int run_save(Shell *sh, const Stmt *st, char *err, size_t n);
+int run_state(Shell *sh, const Stmt *st, char *err, size_t n);
 /* source.c */
 int run_read(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_quit(Shell *sh, const Stmt *st, char *err, size_t n);

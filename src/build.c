@@ -8,6 +8,7 @@
 #include "build.h"
 #include "off.h"
 #include "primitives.h"
+#include "saved.h"
 #include "config.h"
 
 double vrObjectDef_Mass(const vrObjectDef *d) { return d->mass_set ? d->mass : d->volume; }
@@ -131,6 +132,7 @@ void vrObject_Place(vrObject *o, double t, const vrFlight *f)
     vrBody_Anchor(&o->body, t, vrVec3_Of(o->def.translate), vrVec3_Of(o->def.linear_vel), q,
                   vrBody_MomentumAt(&o->body, q, vrVec3_Of(o->def.angular_vel)), f);
     o->have_frame_pose = 0;
+    if (o->saved) vrSaved_Place(o, f);   /* SPEC 11: a saved run goes on where it was */
 }
 
 int vrObject_Ready(vrObject *o, double t, const vrFlight *f, char *err, size_t n)

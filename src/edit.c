@@ -81,12 +81,12 @@ int vrWorld_SetObjectDef(vrWorld *w, vrObjectId id, const vrObjectDef *def, char
     return apply_live_edit(w, o, &old, err, n);
 }
 
-static void drop_pending(vrWorld *w, int id)
+static void drop_state(vrUpdate *u, int id)
 {
     int i, k = 0;
-    for (i = 0; i < w->pending.n; i++)
-        if (w->pending.body[i].id != id) w->pending.body[k++] = w->pending.body[i];
-    w->pending.n = k;
+    for (i = 0; i < u->n; i++)
+        if (u->body[i].id != id) u->body[k++] = u->body[i];
+    u->n = k;
 }
 
 int vrWorld_DeleteObject(vrWorld *w, vrObjectId id)
@@ -99,7 +99,8 @@ int vrWorld_DeleteObject(vrWorld *w, vrObjectId id)
         if (vrRest_WakeIsland(w, woken_by(o), &w->update, w->t) != 0) return -1;
         if (w->owner) vrOwner_DropBody(w->owner, id);
         w->table.obj[id] = NULL;
-        drop_pending(w, id);
+        drop_state(&w->pending, id);
+        drop_state(&w->update, id);      /* a resting body wakes with its island: not itself, gone */
         w->structure++;
         if (vrWorld_ApplyUpdate(w, &w->update) != 0) return -1;
     }

@@ -82,6 +82,12 @@ int vrOwners_Choose(vrWorld *w, char *err, size_t n)
     return 0;
 }
 
+void vrOwners_Retire(vrWorld *w)
+{
+    retire_owner(w);
+    if (w->sgp) vrSgp_Retire(w);
+}
+
 int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up)
 {
     vrFlight f = vrSettings_Flight(&w->s);

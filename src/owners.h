@@ -9,6 +9,9 @@
 
 /* serial or parallel, as the settings say: the owners made or re-set */
 int vrOwners_Choose(vrWorld *w, char *err, size_t n);
+/* the owners go (their counts stay in the stats); the next start makes
+ * them anew from the world's state, as a change of gps does (save.h) */
+void vrOwners_Retire(vrWorld *w);
 /* the owner set the settings choose */
 const vrOwnerSet *vrOwners_Of(const vrWorld *w);
 /* a new object's body and its pairs join the serial owner, if there is one */

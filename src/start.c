@@ -9,6 +9,7 @@
 #include "build.h"
 #include "config.h"
 #include "owners.h"
+#include "resume.h"
 #include "start.h"
 
 #define MAX_REPORTED_OVERLAPS 8
@@ -109,9 +110,15 @@ static int ready_all(vrWorld *w, char *err, size_t n)
     return 0;
 }
 
-int vrWorld_Start(vrWorld *w, char *err, size_t n)
+int vrWorld_GoLive(vrWorld *w, char *err, size_t n)
 {
     if (ready_all(w, err, n) != 0 || vrWorld_MakeLive(w, err, n) != 0) return -1;
+    return vrSave_Resume(w) == 0 ? 0 : vrGeom_Fail(err, n, "out of memory");
+}
+
+int vrWorld_Start(vrWorld *w, char *err, size_t n)
+{
+    if (vrWorld_GoLive(w, err, n) != 0) return -1;
     if (w->params_dirty && apply_params(w) != 0) return vrGeom_Fail(err, n, "out of memory");
     if (vrOwners_Choose(w, err, n) != 0) return -1;
     if (report_overlaps(w, err, n) != 0) return -1;

@@ -10,6 +10,9 @@
 /* objects not yet in the simulation join it: their states go out as
  * changes, so that their pairs are evaluated at the next span start */
 int vrWorld_MakeLive(vrWorld *w, char *err, size_t n);
+/* every object built and live, a saved run's bodies as they were read
+ * (resume.h): the first part of a start, and a saved file's last line */
+int vrWorld_GoLive(vrWorld *w, char *err, size_t n);
 /* the live dynamic bodies again, after objects joined or left */
 int vrWorld_ListDynamic(vrWorld *w);
 

@@ -223,5 +223,6 @@ void vrObject_Free(vrObject *o)
     vrObject_FreeShape(o);
     vrPolyhedron_Free(o->off);
     free(o->off_text);
+    free(o->saved);
     free(o);
 }

@@ -27,6 +27,7 @@ typedef struct vrObject {
     vrPose frame_pose;       /* at the end of the last frame (SPEC 3.5) */
     int have_frame_pose;
     int quiet_frames;        /* frames in a row it qualified for rest (rest.c) */
+    struct vrSavedBody *saved; /* read from a saved file, until it goes live (saved.h) */
 } vrObject;
 
 typedef struct vrTable {

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "config.h"
-#include "world_state.h"
+#include "resume.h"
 #include "parallel/spawn.h"
 #include "tracker.h"
 
@@ -51,6 +51,7 @@ void vrWorld_Destroy(vrWorld *w)
     vrWarm_Free(&w->warm_next);
     vrWorld_FreeTrackers(w);
     vrSounds_Free(&w->sounds);
+    vrSave_Free(w);
     free(w);
 }
 
@@ -71,6 +72,8 @@ void vrWorld_Restart(vrWorld *w)
     vrWorld_ClearTracker(w, VR_DEVICE_HAND);
     vrSounds_Clear(&w->sounds);
     vrSplitmix_Seed(&w->rng, w->s.seed);
+    vrSave_Free(w);
+    w->warm.n = 0;
 }
 
 const vrSettings *vrWorld_Settings(const vrWorld *w) { return &w->s; }

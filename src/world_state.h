@@ -30,6 +30,7 @@
 #include "warm.h"
 
 typedef struct vrSgp vrSgp;
+struct vrResume;
 
 struct vrWorld {
     vrSettings s;
@@ -70,6 +71,7 @@ struct vrWorld {
     /* `random` */
     int random_next;
     vrSplitmix rng;
+    struct vrResume *resume; /* a saved file read, for the next start (save.h) */
 };
 
 static inline vrObject *vrWorld_Object(const vrWorld *w, vrObjectId id) { return vrTable_Get(&w->table, id); }

@@ -1,0 +1,30 @@
+/* save_sections.h — the sections of a saved file (save.h), each a writer
+ * and a reader of `state WORD key=value ...` lines.
+ *   save_world.c   clock, counters, random, gap, live
+ *   save_body.c    body, warm, pending */
+#ifndef VROC_SAVE_SECTIONS_H
+#define VROC_SAVE_SECTIONS_H
+
+#include "save.h"
+
+void vrSave_WriteClock(vrWorld *w, int id, FILE *out);
+int vrSave_ReadClock(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
+void vrSave_WriteCounters(vrWorld *w, int id, FILE *out);
+int vrSave_ReadCounters(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
+void vrSave_WriteRandom(vrWorld *w, int id, FILE *out);
+int vrSave_ReadRandom(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
+/* the last line: the saved run's objects go live as they were, so that
+ * what follows the file acts on them as on the saving run's */
+void vrSave_WriteLive(vrWorld *w, int id, FILE *out);
+int vrSave_ReadLive(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
+/* an id left by a deleted object (ids order pairs and name islands) */
+int vrSave_ReadGap(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
+
+void vrSave_WriteBody(vrWorld *w, int id, FILE *out);
+int vrSave_ReadBody(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
+void vrSave_WriteWarm(vrWorld *w, int id, FILE *out);
+int vrSave_ReadWarm(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
+void vrSave_WritePending(vrWorld *w, int id, FILE *out);
+int vrSave_ReadPending(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
+
+#endif
