@@ -30,7 +30,7 @@ WARN   = -std=c99 -Wall -Wextra -pedantic -Werror
 DEFS   = -D_POSIX_C_SOURCE=200809L
 INCS   = -Iinclude -Isrc -Ibuild/gen -isystem /usr/include/suitesparse
 SHELL_INCS = -Iinclude
-LIBS   = -lccd -lklu -llcm -ldl -lm
+LIBS   = -lccd -lklu -llcm -lpng -ldl -lm
 RL_LIBS = -lreadline
 GL_LIBS = -lOSMesa
 

@@ -120,7 +120,7 @@ static double rate(vrDisplay *d, vrWorld *w, const vrView *v, int frames, const 
     int i;
     for (i = 0; i < frames; i++) {
         if (vrDisplay_Render(d, w, v, err, sizeof err) ||
-            (dir && vrDisplay_WriteFrames(d, dir, i % 4, err, sizeof err))) {
+            (dir && vrDisplay_WriteFrames(d, dir, i % 4, VR_FRAMES_PPM, err, sizeof err))) {
             fprintf(stderr, "bench_render: %s\n", err);
             return 0;
         }

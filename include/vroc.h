@@ -209,9 +209,12 @@ int vrDisplay_Open(vrDisplay **out, char *err, size_t errlen);
 void vrDisplay_Close(vrDisplay *d);
 /* draws both eyes of the world's current state */
 int vrDisplay_Render(vrDisplay *d, vrWorld *w, const vrView *view, char *err, size_t errlen);
-/* writes the last render as frame-NNNNNN-left.ppm / -right.ppm into dir
- * (created if missing) */
-int vrDisplay_WriteFrames(const vrDisplay *d, const char *dir, long frame, char *err, size_t errlen);
+/* the files a frame is written as: binary PPM or PNG (frames_format) */
+typedef enum vrFrameFormat { VR_FRAMES_PPM, VR_FRAMES_PNG } vrFrameFormat;
+/* writes the last render as frame-NNNNNN-left.EXT / -right.EXT into dir
+ * (created if missing), EXT ppm or png */
+int vrDisplay_WriteFrames(const vrDisplay *d, const char *dir, long frame, vrFrameFormat format,
+                          char *err, size_t errlen);
 /* the last render's pixels: eye 0 left, 1 right; RGB rows top to bottom */
 const unsigned char *vrDisplay_Pixels(const vrDisplay *d, int eye, int *width, int *height);
 const char *vrDisplay_RendererName(const vrDisplay *d);

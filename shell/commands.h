@@ -105,6 +105,7 @@ int run_gravity(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_view(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_reset(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_frames(Shell *sh, const Stmt *st, char *err, size_t n);
+int run_frames_format(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_dump(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_stats(Shell *sh, const Stmt *st, char *err, size_t n);
 /* simulate.c */

@@ -19,7 +19,7 @@ int sh_display_draw(Shell *sh, char *err, size_t n)
     if (vrDisplay_Render(sh->display, sh->world, &sh->view, err, n) != 0) return -1;
     if (!sh->frames_dir[0]) return 0;
     vrWorld_GetStats(sh->world, &st);
-    return vrDisplay_WriteFrames(sh->display, sh->frames_dir, st.frames, err, n);
+    return vrDisplay_WriteFrames(sh->display, sh->frames_dir, st.frames, sh->frames_format, err, n);
 }
 
 void sh_display_close(Shell *sh)

@@ -34,6 +34,7 @@ typedef struct Shell {
     vrView view;                 /* head pose and stereo parameters (SPEC 4) */
     vrDisplay *display;          /* NULL until something needs it */
     char frames_dir[VR_PATH_MAX];/* "" : frames are not written */
+    vrFrameFormat frames_format; /* PPM (the default) or PNG */
     vrObjectId selected;         /* the object that attribute statements edit */
     int interactive;             /* a person at a terminal: `start` runs in real time */
     int quiet;                   /* -q: no notes */
