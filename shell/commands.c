@@ -16,6 +16,7 @@
 
 static const char *const distributions[] = {"round_robin", "improved", NULL};
 static const char *const frame_formats[] = {"ppm", "png", NULL};
+static const char *const window_modes[] = {"mono", "side", "anaglyph", NULL};
 
 #define OBJ_CMD(nm, what) \
     {nm, nm " NAME", what, NULL, G_OBJECT, F_NAME, K_NONE, R_ANY, 0, 0, 0, NULL, T_NONE, 0, 0, run_object}
@@ -60,6 +61,7 @@ const Command sh_commands[] = {
 
     VERB("read", "read FILE", "read commands from FILE (relative to the file that reads it)", G_SYSTEM, F_PATH, R_ANY, 0, 0, run_read),
     VERB("display", "display", "open the display and draw the current frame", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_display),
+    VERB("window", "window", "open the live window (needs $DISPLAY) and show the current frame", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_window),
     VERB("reset", "reset", "put the head pose (eye, look, up) back to its default", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_reset),
     VERB("restart", "restart", "remove all objects; reset time, frames and statistics (settings stay)", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_restart),
     VERB("start", "start", "start time (a script: until all rest or max_frames frames)", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_start),
@@ -107,6 +109,8 @@ const Command sh_commands[] = {
     VIEW("ipd", "ipd = m", "distance between the eyes, m", "0.064", K_NUM, R_GE, 0, BIG, ipd),
     VIEW("focal", "focal = m", "distance where the eyes converge, m (0: |look - eye|)", "0", K_NUM, R_GE, 0, BIG, focal),
     VIEW("fov", "fov = degrees", "vertical field of view", "45", K_NUM, R_CLOSED, 10, 120, fov),
+    {"window_mode", "window_mode = mono|side|anaglyph", "the window: one view, the eyes side by side, or red-cyan", "mono", G_VIEW, F_ASSIGN,
+     K_CHOICE, R_ANY, 0, 0, 0, window_modes, T_NONE, 0, 0, run_window_mode},
     VIEW("see_through", "see_through = 0|1|2", "real objects: 0 solid, 1 wireframe, 2 not drawn", "0", K_INT, R_CLOSED, 0, 2, see_through),
 };
 const int sh_ncommands = (int)(sizeof sh_commands / sizeof sh_commands[0]);

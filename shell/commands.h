@@ -115,6 +115,9 @@ int run_step(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_restart(Shell *sh, const Stmt *st, char *err, size_t n);
 /* frames.c */
 int run_display(Shell *sh, const Stmt *st, char *err, size_t n);
+/* window.c */
+int run_window(Shell *sh, const Stmt *st, char *err, size_t n);
+int run_window_mode(Shell *sh, const Stmt *st, char *err, size_t n);
 /* source.c */
 int run_read(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_quit(Shell *sh, const Stmt *st, char *err, size_t n);

@@ -11,10 +11,12 @@ int sh_display_open(Shell *sh, char *err, size_t n)
     return vrDisplay_Open(&sh->display, err, n);
 }
 
-/* the current frame, when a display is open; written when a folder is set */
+/* the current frame, when a display is open; written when a folder is set;
+ * the window (window.c) shows it too */
 int sh_display_draw(Shell *sh, char *err, size_t n)
 {
     vrStats st;
+    sh_window_frame(sh);
     if (!sh->display) return 0;
     if (vrDisplay_Render(sh->display, sh->world, &sh->view, err, n) != 0) return -1;
     if (!sh->frames_dir[0]) return 0;
@@ -24,6 +26,7 @@ int sh_display_draw(Shell *sh, char *err, size_t n)
 
 void sh_display_close(Shell *sh)
 {
+    sh_window_close(sh);
     vrDisplay_Close(sh->display);
     sh->display = NULL;
 }
