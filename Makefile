@@ -1,6 +1,6 @@
 # VROC — a plain Makefile, no configure step.
 #
-#   make          libvroc.a, vroc, vroc-gp, vroc-render.so in this folder, and
+#   make          libvroc.a, vroc, vroc-gp, vroc-render.so, vroc-window.so in this folder, and
 #                 tools/vroc-sound (a sound log to WAV: libsndfile) and
 #                 tools/vroc-tracker (a track file published over LCM)
 #   make check    every test, built with ASan+UBSan (last line: N passed, M failed)
@@ -32,10 +32,12 @@ WARN   = -std=c99 -Wall -Wextra -pedantic -Werror
 DEFS   = -D_POSIX_C_SOURCE=200809L
 INCS   = -Iinclude -Isrc -Ibuild/gen -isystem /usr/include/suitesparse
 SHELL_INCS = -Iinclude
-LIBS   = -lccd -lklu -llcm -ldl -lm
+LIBS   = -lccd -lklu -llcm -lpng -ldl -lm
 RL_LIBS = -lreadline
 GL_LIBS = -lOSMesa
 SND_LIBS = -lsndfile
+WIN_LIBS = -lglfw -lGL
+X_LIBS = -lX11
 
 rel_OPT     = -O3 -g -fno-math-errno -flto=auto
 rel_CFLAGS  = $(rel_OPT) -ffat-lto-objects
@@ -43,14 +45,14 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-s
 rel_LDFLAGS  = $(rel_OPT)
 asan_LDFLAGS = -fsanitize=address,undefined
 
-LIB_SRC    := $(filter-out src/render.c,$(wildcard src/*.c src/parallel/*.c))
+LIB_SRC    := $(filter-out src/render.c src/window_glfw.c,$(wildcard src/*.c src/parallel/*.c))
 LCM_TYPES  := $(wildcard src/parallel/*.lcm)
 LCM_GEN    := $(patsubst src/parallel/%.lcm,build/gen/vroc_%.c,$(LCM_TYPES))
 SHELL_SRC  := $(filter-out shell/gp_main.c,$(wildcard shell/*.c))
 TEST_SRC   := $(wildcard tests/*.c)
 BENCH_SRC  := $(wildcard bench/bench_*.c)
 
-PRODUCTS = libvroc.a vroc vroc-gp vroc-render.so
+PRODUCTS = libvroc.a vroc vroc-gp vroc-render.so vroc-window.so
 # C programs of tools/ (tools/src/NAME.c), built beside the others and
 # copied to tools/NAME
 TOOLS = vroc-sound vroc-tracker
@@ -126,6 +128,16 @@ build/$(1)/vroc-sound: build/$(1)/tools/src/vroc-sound.o
 build/$(1)/vroc-tracker: build/$(1)/tools/src/vroc-tracker.o build/$(1)/libvroc.a
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
 
+# the window is a module too: X, GL and GLFW load only when `window` opens it
+build/$(1)/vroc-window.so: src/window_glfw.c src/window_module.h src/render.h include/vroc.h | build/deps.stamp
+	@mkdir -p $$(@D)
+	$$(CC) $$(WARN) $$(DEFS) $$(INCS) $$($(1)_CFLAGS) -fPIC -shared -o $$@ $$< $$($(1)_LDFLAGS) $$(WIN_LIBS)
+
+# the window tests' screenshot (tests/window.sh): one X window's pixels as a PPM
+build/$(1)/tests/xshot: tests/x11/xshot.c | build/deps.stamp
+	@mkdir -p $$(@D)
+	$$(CC) $$(WARN) $$(DEFS) $$($(1)_CFLAGS) -o $$@ $$< $$($(1)_LDFLAGS) $$(X_LIBS)
+
 # one runner: tests/main.c and every tests/*.c beside it (each test_*.c a suite)
 build/$(1)/tests/vroc-tests: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC)) build/$(1)/libvroc.a
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
@@ -134,8 +146,8 @@ build/$(1)/tests/vroc-tests: $$(patsubst %.c,build/$(1)/%.o,$$(TEST_SRC)) build/
 build/$(1)/bench/%: build/$(1)/bench/%.o build/$(1)/libvroc.a
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ $$(LIBS)
 
-$(1)-all: build/$(1)/libvroc.a build/$(1)/vroc build/$(1)/vroc-gp build/$(1)/vroc-render.so $$($(1)_TESTS) \
-          $$(patsubst %,build/$(1)/%,$$(TOOLS))
+$(1)-all: build/$(1)/libvroc.a build/$(1)/vroc build/$(1)/vroc-gp build/$(1)/vroc-render.so build/$(1)/vroc-window.so \
+          build/$(1)/tests/xshot $$($(1)_TESTS) $$(patsubst %,build/$(1)/%,$$(TOOLS))
 -include $$($(1)_OBJ:.o=.d) $$(patsubst %.c,build/$(1)/%.d,$$(SHELL_SRC) $$(TEST_SRC) $$(BENCH_SRC) shell/gp_main.c) \
          $$(patsubst %,build/$(1)/tools/src/%.d,$$(TOOLS))
 endef
@@ -155,7 +167,7 @@ demo: all
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/vroc $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 755 vroc vroc-gp $(patsubst %,tools/%,$(TOOLS)) $(DESTDIR)$(PREFIX)/bin/
-	install -m 644 vroc-render.so $(DESTDIR)$(PREFIX)/lib/vroc/
+	install -m 644 vroc-render.so vroc-window.so $(DESTDIR)$(PREFIX)/lib/vroc/
 	install -m 644 man/vroc.1 $(DESTDIR)$(PREFIX)/share/man/man1/
 
 clean:

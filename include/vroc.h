@@ -224,9 +224,12 @@ int vrDisplay_Open(vrDisplay **out, char *err, size_t errlen);
 void vrDisplay_Close(vrDisplay *d);
 /* draws both eyes of the world's current state */
 int vrDisplay_Render(vrDisplay *d, vrWorld *w, const vrView *view, char *err, size_t errlen);
-/* writes the last render as frame-NNNNNN-left.ppm / -right.ppm into dir
- * (created if missing) */
-int vrDisplay_WriteFrames(const vrDisplay *d, const char *dir, long frame, char *err, size_t errlen);
+/* the files a frame is written as: binary PPM or PNG (frames_format) */
+typedef enum vrFrameFormat { VR_FRAMES_PPM, VR_FRAMES_PNG } vrFrameFormat;
+/* writes the last render as frame-NNNNNN-left.EXT / -right.EXT into dir
+ * (created if missing), EXT ppm or png */
+int vrDisplay_WriteFrames(const vrDisplay *d, const char *dir, long frame, vrFrameFormat format,
+                          char *err, size_t errlen);
 /* the last render's pixels: eye 0 left, 1 right; RGB rows top to bottom */
 const unsigned char *vrDisplay_Pixels(const vrDisplay *d, int eye, int *width, int *height);
 const char *vrDisplay_RendererName(const vrDisplay *d);
@@ -313,6 +316,50 @@ int vrTrackers_WaitFirst(vrTrackers *tr, double deadline);
 long long vrTrackers_Refused(const vrTrackers *tr);
 /* publishes sound events on VROC_SOUND (vroc.sound_t) */
 int vrTrackers_PublishSounds(vrTrackers *tr, const vrSoundEvent *ev, int n, const char *sound);
+/* ---- the live window (SPEC 9): GLFW, loaded on first use ------------- */
+/* The window shows a display's last render: mono (the left image of a view
+ * rendered with ipd 0), side (left | right) or anaglyph (red from the left
+ * eye, green and blue from the right).  vroc-window.so is dlopen()ed by the
+ * first vrWindow_Open, so nothing of X, GL or GLFW is loaded before. */
+typedef enum vrWindowMode { VR_WINDOW_MONO, VR_WINDOW_SIDE, VR_WINDOW_ANAGLYPH } vrWindowMode;
+typedef enum vrWindowEventType {
+    VR_WEV_PRESS, VR_WEV_RELEASE,   /* a mouse button (1 left, 2 middle, 3 right) */
+    VR_WEV_MOTION,                  /* the pointer moved */
+    VR_WEV_SCROLL,                  /* the wheel: amount > 0 away from the user */
+    VR_WEV_KEY,                     /* a key went down: key is ASCII, lower case; 27 Esc */
+    VR_WEV_CLOSE                    /* the window manager's close button */
+} vrWindowEventType;
+typedef struct vrWindowEvent {
+    vrWindowEventType type;
+    double x, y;                    /* the pointer, pixels from the top left */
+    int button, key;
+    double amount;
+    double time;                    /* monotonic seconds when it was taken */
+} vrWindowEvent;
+typedef struct vrWindow vrWindow;
+/* fails with a clear message when $DISPLAY is unset or no X server answers */
+int vrWindow_Open(vrWindow **out, char *err, size_t errlen);
+void vrWindow_Close(vrWindow *win);
+/* shows d's last render in mode (the window takes its size from it) */
+int vrWindow_Show(vrWindow *win, const vrDisplay *d, vrWindowMode mode, char *err, size_t errlen);
+/* the events since the last call, at most max; never blocks */
+int vrWindow_Poll(vrWindow *win, vrWindowEvent *ev, int max);
+
+/* the virtual trackball (thesis chapter 5's HP-750): a drag of (dx, dy)
+ * pixels (y down) turns the scene about look by pi*|d|/height radians,
+ * about the axis dx*u + dy*r (u, r: the screen's up and right): eye and up
+ * turn the other way.  Zoom: each wheel step brings the eye 10 % nearer
+ * look (amount < 0: further). */
+void vrView_Trackball(vrView *v, double dx, double dy);
+void vrView_Zoom(vrView *v, double amount);
+/* the ray from the head (the centre eye) through the pixel at (x, y) of a
+ * width x height image of v (x, y from the top left, continuous) */
+void vrView_PointerRay(const vrView *v, double x, double y, int width, int height,
+                       double origin[3], double dir[3]);
+/* the first object a ray meets (its polygons, as drawn), its distance t
+ * along dir (unit); -1 when it meets none */
+int vrWorld_RayCast(vrWorld *w, const double origin[3], const double dir[3],
+                    vrObjectId *hit, double *t);
 
 /* ---- workers (SPEC 5) ---------------------------------------------------- */
 /* The loop of a worker process (`vroc-gp URL`): announces itself on the LCM

@@ -15,6 +15,8 @@
 #define BIG 1e9   /* the library's ceiling for lengths, speeds and steps */
 
 static const char *const distributions[] = {"round_robin", "improved", NULL};
+static const char *const frame_formats[] = {"ppm", "png", NULL};
+static const char *const window_modes[] = {"mono", "side", "anaglyph", NULL};
 
 #define OBJ_CMD(nm, what) \
     {nm, nm " NAME", what, NULL, G_OBJECT, F_NAME, K_NONE, R_ANY, 0, 0, 0, NULL, T_NONE, 0, 0, run_object}
@@ -59,6 +61,7 @@ const Command sh_commands[] = {
 
     VERB("read", "read FILE", "read commands from FILE (relative to the file that reads it)", G_SYSTEM, F_PATH, R_ANY, 0, 0, run_read),
     VERB("display", "display", "open the display and draw the current frame", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_display),
+    VERB("window", "window", "open the live window (needs $DISPLAY) and show the current frame", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_window),
     VERB("reset", "reset", "put the head pose (eye, look, up) back to its default", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_reset),
     VERB("restart", "restart", "remove all objects; reset time, frames and statistics (settings stay)", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_restart),
     VERB("start", "start", "start time (a script: until all rest or max_frames frames)", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_start),
@@ -86,8 +89,10 @@ const Command sh_commands[] = {
     VERB("stats", "stats", "print the statistics (one line of key=value)", G_EXT, F_BARE, R_ANY, 0, 0, run_stats),
     VERB("show", "show NAME", "print the attributes of object NAME", G_EXT, F_NAME, R_ANY, 0, 0, run_show),
     VERB("delete", "delete NAME", "remove object NAME", G_EXT, F_NAME, R_ANY, 0, 0, run_delete),
-    {"frames", "frames = DIR", "write each frame's PPM pair into DIR (empty: stop writing)", "frames", G_EXT, F_ASSIGN,
+    {"frames", "frames = DIR", "write each frame's image pair into DIR (empty: stop writing)", "frames", G_EXT, F_ASSIGN,
      K_TEXT, R_ANY, 0, VR_PATH_MAX - 1, 1, NULL, T_NONE, 0, 0, run_frames},
+    {"frames_format", "frames_format = ppm|png", "the files frames are written as", "ppm", G_EXT, F_ASSIGN,
+     K_CHOICE, R_ANY, 0, 0, 0, frame_formats, T_NONE, 0, 0, run_frames_format},
     SETTING("max_frames", "max_frames = n", "a script's start stops after n frames", "600", G_EXT, K_INT, R_CLOSED, 0, 1e9, max_frames),
     SETTING("heap", "heap = 0|1", "1: the scheduling heap; 0: every pair at every internal step", "1", G_EXT, K_INT, R_CLOSED, 0, 1, heap),
     SETTING("gps", "gps = n", "worker processes (0: serial)", "0", G_EXT, K_INT, R_CLOSED, 0, 64, gps),
@@ -113,6 +118,8 @@ const Command sh_commands[] = {
     VIEW("ipd", "ipd = m", "distance between the eyes, m", "0.064", K_NUM, R_GE, 0, BIG, ipd),
     VIEW("focal", "focal = m", "distance where the eyes converge, m (0: |look - eye|)", "0", K_NUM, R_GE, 0, BIG, focal),
     VIEW("fov", "fov = degrees", "vertical field of view", "45", K_NUM, R_CLOSED, 10, 120, fov),
+    {"window_mode", "window_mode = mono|side|anaglyph", "the window: one view, the eyes side by side, or red-cyan", "mono", G_VIEW, F_ASSIGN,
+     K_CHOICE, R_ANY, 0, 0, 0, window_modes, T_NONE, 0, 0, run_window_mode},
     VIEW("see_through", "see_through = 0|1|2", "real objects: 0 solid, 1 wireframe, 2 not drawn", "0", K_INT, R_CLOSED, 0, 2, see_through),
 };
 const int sh_ncommands = (int)(sizeof sh_commands / sizeof sh_commands[0]);
@@ -156,6 +163,18 @@ static int integer_kind(const Command *c)
     return c->kind == K_INT || c->kind == K_IVEC3 || c->kind == K_IVEC2 || c->form == F_COUNT || c->form == F_INT;
 }
 
+/* "a or b", "a, b or c" */
+static void choice_list(const Command *c, char *buf, size_t n)
+{
+    size_t used = 0;
+    int i;
+    buf[0] = '\0';
+    for (i = 0; c->choices[i] && used < n; i++) {
+        const char *sep = i == 0 ? "" : c->choices[i + 1] ? ", " : " or ";
+        used += (size_t)snprintf(buf + used, n - used, "%s%s", sep, c->choices[i]);
+    }
+}
+
 void sh_range_text(const Command *c, char *buf, size_t n)
 {
     char lo[32], hi[32], upper[48] = "";
@@ -167,7 +186,7 @@ void sh_range_text(const Command *c, char *buf, size_t n)
         return;
     }
     if (c->kind == K_CHOICE) {
-        snprintf(buf, n, "%s or %s", c->choices[0], c->choices[1]);
+        choice_list(c, buf, n);
         return;
     }
     if (c->hi > 0) snprintf(upper, sizeof upper, ", at most %s", hi);
@@ -238,14 +257,15 @@ static int text_value(Lexer *lx, const Command *c, Stmt *st, char *err, size_t n
 
 static int choice_value(Lexer *lx, const Command *c, Stmt *st, char *err, size_t n)
 {
-    char g[80];
+    char g[80], list[160];
     lx_word(lx, &st->text, &st->textlen);
     for (st->choice = 0; c->choices[st->choice]; st->choice++)
         if (strlen(c->choices[st->choice]) == st->textlen
             && memcmp(c->choices[st->choice], st->text, st->textlen) == 0)
             return 0;
     lx_quote(g, sizeof g, st->text, st->textlen);
-    snprintf(err, n, "%s must be %s or %s (got %s)", c->name, c->choices[0], c->choices[1], g);
+    choice_list(c, list, sizeof list);
+    snprintf(err, n, "%s must be %s (got %s)", c->name, list, g);
     return -1;
 }
 

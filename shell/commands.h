@@ -105,6 +105,7 @@ int run_gravity(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_view(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_reset(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_frames(Shell *sh, const Stmt *st, char *err, size_t n);
+int run_frames_format(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_dump(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_stats(Shell *sh, const Stmt *st, char *err, size_t n);
 /* simulate.c */
@@ -124,6 +125,9 @@ vrView sh_current_view(const Shell *sh);
 /* save.c */
 int run_save(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_state(Shell *sh, const Stmt *st, char *err, size_t n);
+/* window.c */
+int run_window(Shell *sh, const Stmt *st, char *err, size_t n);
+int run_window_mode(Shell *sh, const Stmt *st, char *err, size_t n);
 /* source.c */
 int run_read(Shell *sh, const Stmt *st, char *err, size_t n);
 int run_quit(Shell *sh, const Stmt *st, char *err, size_t n);

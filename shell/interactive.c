@@ -227,7 +227,8 @@ static int wait_input(Shell *sh)
 {
     fd_set fds;
     struct timespec ts, *tsp = NULL;
-    double wait = sh_frame_wait(sh);
+    double wait = sh_frame_wait(sh), win = sh_window_wait(sh);
+    if (win >= 0 && (wait < 0 || win < wait)) wait = win;   /* the window's input too */
     if (wait >= 0) {
         ts.tv_sec = (time_t)wait;
         ts.tv_nsec = (long)((wait - (double)ts.tv_sec) * 1e9);
@@ -258,7 +259,8 @@ int sh_interactive(Shell *sh)
             continue;
         }
         if (r < 0) break;
-        if (r == 0) tick(sh);
+        sh_window_service(sh);
+        if (r == 0 && sh_frame_wait(sh) == 0) tick(sh);
         else rl_callback_read_char();
     }
     rl_callback_handler_remove();

@@ -7,6 +7,7 @@
  * every statement succeeded, 1 after any error, 2 for bad usage.
  */
 #include <stdio.h>
+#include <sys/stat.h>
 #include <string.h>
 #include <unistd.h>
 #include "shell.h"
@@ -84,6 +85,10 @@ static void read_files(Shell *sh, const Options *o)
 static void read_stdin(Shell *sh)
 {
     Source src;
+    struct stat sb;
+    /* a pipe unbuffered: the wait for its next line (the window serviced
+     * meanwhile, SPEC 9) then never misses a line already read ahead */
+    if (fstat(STDIN_FILENO, &sb) == 0 && !S_ISREG(sb.st_mode)) setvbuf(stdin, NULL, _IONBF, 0);
     sh_source_init(&src, "<stdin>", "");
     sh_read_stream(sh, stdin, &src);
 }

@@ -76,6 +76,13 @@ int run_frames(Shell *sh, const Stmt *st, char *err, size_t n)
     return 0;
 }
 
+int run_frames_format(Shell *sh, const Stmt *st, char *err, size_t n)
+{
+    (void)err, (void)n;
+    sh->frames_format = st->choice == 1 ? VR_FRAMES_PNG : VR_FRAMES_PPM;
+    return 0;
+}
+
 static int stdout_ok(char *err, size_t n)
 {
     if (fflush(stdout) == 0 && !ferror(stdout)) return 0;

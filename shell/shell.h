@@ -34,6 +34,9 @@ typedef struct Shell {
     vrView view;                 /* head pose and stereo parameters (SPEC 4) */
     vrDisplay *display;          /* NULL until something needs it */
     char frames_dir[VR_PATH_MAX];/* "" : frames are not written */
+    vrFrameFormat frames_format; /* PPM (the default) or PNG */
+    struct ShWindow *window;     /* the live window (window.c); NULL: none */
+    vrWindowMode window_mode;
     vrObjectId selected;         /* the object that attribute statements edit */
     int interactive;             /* a person at a terminal: `start` runs in real time */
     int quiet;                   /* -q: no notes */
@@ -93,5 +96,21 @@ void sh_sound_close(Shell *sh);
 int sh_display_open(Shell *sh, char *err, size_t n);
 int sh_display_draw(Shell *sh, char *err, size_t n);
 void sh_display_close(Shell *sh);
+
+/* window.c: the live window (SPEC 9), serviced whenever the shell waits */
+/* reads its input and shows the current frame when it changed; no-op
+ * without a window */
+void sh_window_service(Shell *sh);
+/* a new frame: shown at the next service */
+void sh_window_frame(Shell *sh);
+/* waits until fd has input, servicing the window and running real-time
+ * frames meanwhile; at once when neither is there */
+void sh_wait_input(Shell *sh, int fd);
+/* seconds the prompt may sleep before the window needs servicing, -1: any */
+double sh_window_wait(const Shell *sh);
+void sh_window_close(Shell *sh);
+
+/* simulate.c: a real-time run (the prompt's `start`, the window's space key) */
+int sh_run_realtime(Shell *sh, char *err, size_t n);
 
 #endif

@@ -67,9 +67,16 @@ int run_start(Shell *sh, const Stmt *st, char *err, size_t n)
         sh_interrupted = 0;
         return advance(sh, vrWorld_Settings(sh->world)->max_frames, 1, err, n);
     }
+    if (sh_run_realtime(sh, err, n) != 0) return -1;
+    sh_location(sh, sh->run_origin, sizeof sh->run_origin);
+    return 0;
+}
+
+int sh_run_realtime(Shell *sh, char *err, size_t n)
+{
+    if (vrWorld_Start(sh->world, err, n) != 0) return -1;
     if (!sh->running) sh->next_frame = now_s() + frame_period(sh);
     sh->running = 1;
-    sh_location(sh, sh->run_origin, sizeof sh->run_origin);
     return 0;
 }
 

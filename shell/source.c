@@ -25,7 +25,8 @@ int sh_read_stream(Shell *sh, FILE *f, Source *src)
     src->parent = outer;
     src->depth = outer ? outer->depth + 1 : 0;
     sh->src = src;
-    while (!sh->quit && !sh->bailing && (len = getline(&buf, &cap, f)) >= 0) {
+    /* a pipe may keep the shell waiting: the window is serviced meanwhile */
+    while (!sh->quit && !sh->bailing && (sh_wait_input(sh, fileno(f)), (len = getline(&buf, &cap, f)) >= 0)) {
         src->line++;
         sh_exec_line(sh, buf, (size_t)len);
     }

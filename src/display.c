@@ -7,16 +7,8 @@
  * vrDisplay_Open, so that a run without a display never loads OSMesa and
  * the LLVM it pulls in (a cost at every process start).
  *
- * Where the module is looked for, first found wins:
- *   $VROC_RENDER_MODULE (a path to the .so; when set, the only place looked)
- *   beside the running executable (readlink /proc/self/exe)
- *   the executable's parent folder (tests run from build/<variant>/tests/)
- *   <executable>/../lib/vroc (an installed tree: PREFIX/bin, PREFIX/lib/vroc)
- *   VROC_LIBDIR, /usr/local/lib/vroc unless the build defines it
- * The module stays loaded until the process ends: OSMesa and LLVM register
- * exit handlers and thread state that do not survive a dlclose.
+ * Where the module is looked for: module.h.
  */
-#include <dlfcn.h>
 #include <errno.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -24,15 +16,13 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
-#include <unistd.h>
 
 #include "vroc.h"
 #include "vec.h"
 #include "render.h"
+#include "image.h"
+#include "module.h"
 
-#ifndef VROC_LIBDIR
-#define VROC_LIBDIR "/usr/local/lib/vroc"
-#endif
 #define MODULE_FILE "vroc-render.so"
 #define RES_MIN 16
 #define RES_MAX 8192
@@ -50,65 +40,17 @@ struct vrDisplay {
 /* ---- the module ---------------------------------------------------------- */
 static const vrRenderApi *module_api;    /* loaded once per process */
 
-/* a loaded module, or NULL and a message saying why this file is not one */
-static const vrRenderApi *open_module(const char *path, char *err, size_t errlen)
-{
-    void *h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
-    const vrRenderApi *api;
-    if (!h) {
-        vrRender_Error(err, errlen, "cannot load the render module: %s", dlerror());
-        return NULL;
-    }
-    api = (const vrRenderApi *)dlsym(h, VR_RENDER_SYMBOL);
-    if (!api || api->abi != VR_RENDER_ABI) {
-        vrRender_Error(err, errlen, "%s is not a render module of this build (%s); rebuild it", path,
-                api ? "another interface version" : "no " VR_RENDER_SYMBOL);
-        dlclose(h);
-        return NULL;
-    }
-    return api;
-}
-
-/* the folder of the running executable, "" when unknown */
-static void exe_dir(char *dir, size_t len)
-{
-    ssize_t n = readlink("/proc/self/exe", dir, len - 1);
-    char *slash;
-    dir[n > 0 ? n : 0] = '\0';
-    slash = strrchr(dir, '/');
-    if (slash) *slash = '\0';
-    else dir[0] = '\0';
-}
-
-static int find_module(char *path, size_t len)
-{
-    static const char *const rel[] = {"/", "/../", "/../lib/vroc/"};
-    char dir[4096];
-    size_t i;
-    exe_dir(dir, sizeof dir);
-    for (i = 0; dir[0] && i < sizeof rel / sizeof rel[0]; i++) {
-        snprintf(path, len, "%s%s" MODULE_FILE, dir, rel[i]);
-        if (access(path, F_OK) == 0) return 0;
-    }
-    snprintf(path, len, "%s/" MODULE_FILE, VROC_LIBDIR);
-    return access(path, F_OK) == 0 ? 0 : -1;
-}
-
 static int load_module(char *err, size_t errlen)
 {
-    const char *env = getenv("VROC_RENDER_MODULE");
-    char path[4200];
+    const vrRenderApi *api;
     if (module_api) return 0;
-    if (env && env[0]) {
-        snprintf(path, sizeof path, "%s", env);
-    } else if (find_module(path, sizeof path)) {
-        vrRender_Error(err, errlen, "cannot find the render module " MODULE_FILE " (looked beside the "
-                "executable, in its parent folder, in ../lib/vroc and in " VROC_LIBDIR
-                "); set VROC_RENDER_MODULE to its path");
-        return -1;
+    api = vrModule_Load("render module", MODULE_FILE, "VROC_RENDER_MODULE", VR_RENDER_SYMBOL, err, errlen);
+    if (api && api->abi != VR_RENDER_ABI) {
+        vrRender_Error(err, errlen, "the render module " MODULE_FILE " is another interface version; rebuild it");
+        api = NULL;
     }
-    module_api = open_module(path, err, errlen);
-    return module_api ? 0 : -1;
+    module_api = api;
+    return api ? 0 : -1;
 }
 
 /* ---- open and close ------------------------------------------------------ */
@@ -387,31 +329,11 @@ static int make_dirs(const char *dir, char *err, size_t errlen)
     return 0;
 }
 
-static int write_ppm(const char *path, const unsigned char *rgb, int width, int height,
-                     char *err, size_t errlen)
-{
-    FILE *f = fopen(path, "wb");
-    size_t bytes = (size_t)width * (size_t)height * 3;
-    int ok;
-    if (!f) {
-        vrRender_Error(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        return -1;
-    }
-    errno = 0;
-    ok = fprintf(f, "P6\n%d %d\n255\n", width, height) > 0;
-    ok = ok && fwrite(rgb, 1, bytes, f) == bytes;   /* one fwrite per image */
-    ok = fclose(f) == 0 && ok;
-    if (!ok) {
-        vrRender_Error(err, errlen, "cannot write '%s': %s", path, strerror(errno ? errno : EIO));
-        remove(path);    /* no truncated frame left behind */
-        return -1;
-    }
-    return 0;
-}
-
-int vrDisplay_WriteFrames(const vrDisplay *d, const char *dir, long frame, char *err, size_t errlen)
+int vrDisplay_WriteFrames(const vrDisplay *d, const char *dir, long frame, vrFrameFormat format,
+                          char *err, size_t errlen)
 {
     static const char *const side[2] = {"left", "right"};
+    const char *ext = format == VR_FRAMES_PNG ? "png" : "ppm";
     char path[4200];
     int e;
     if (!d || !d->width) {
@@ -424,11 +346,13 @@ int vrDisplay_WriteFrames(const vrDisplay *d, const char *dir, long frame, char 
     }
     if (make_dirs(dir, err, errlen)) return -1;
     for (e = 0; e < 2; e++) {
-        if ((size_t)snprintf(path, sizeof path, "%s/frame-%06ld-%s.ppm", dir, frame, side[e]) >= sizeof path) {
+        if ((size_t)snprintf(path, sizeof path, "%s/frame-%06ld-%s.%s", dir, frame, side[e], ext) >= sizeof path) {
             vrRender_Error(err, errlen, "frames folder path too long");
             return -1;
         }
-        if (write_ppm(path, d->pixels[e], d->width, d->height, err, errlen)) return -1;
+        if ((format == VR_FRAMES_PNG ? vrImage_WritePNG : vrImage_WritePPM)(path, d->pixels[e], d->width,
+                                                                            d->height, err, errlen))
+            return -1;
     }
     return 0;
 }

@@ -7,6 +7,7 @@
  */
 #define _DEFAULT_SOURCE 1   /* setenv, mkdtemp */
 #include <errno.h>
+#include <png.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -465,15 +466,56 @@ static int test_frames_are_well_formed_ppm_in_a_created_folder(void)
     snprintf(sub, sizeof sub, "%s/a/b/frames", dir);
     ENSURE(add_box(s.w, "box", c, h, 10, 20, 30, 0) != VR_NO_OBJECT);
     ENSURE(show(&s) == 0);
-    ENSURE_MSG(vrDisplay_WriteFrames(s.d, sub, 7, err, sizeof err) == 0, "%s", err);
+    ENSURE_MSG(vrDisplay_WriteFrames(s.d, sub, 7, VR_FRAMES_PPM, err, sizeof err) == 0, "%s", err);
     ENSURE(check_ppm(s.d, sub, 7, 0, 64, 40) == 0);
     ENSURE(check_ppm(s.d, sub, 7, 1, 64, 40) == 0);
     /* a new resolution: the next frames follow it */
     s.v.width = 48, s.v.height = 96;
     ENSURE(show(&s) == 0);
-    ENSURE(vrDisplay_WriteFrames(s.d, sub, 1234567, err, sizeof err) == 0);
+    ENSURE(vrDisplay_WriteFrames(s.d, sub, 1234567, VR_FRAMES_PPM, err, sizeof err) == 0);
     ENSURE(check_ppm(s.d, sub, 1234567, 0, 48, 96) == 0);
     ENSURE(near_rgb(pixel(s.d, 0, 24, 48), 10, 20, 30, 1));
+    done(&s);
+    ENSURE(remove_tree(dir) == 0);
+    return 0;
+}
+
+/* frames_format = png: the file decodes (libpng, independently of the
+ * writer's code path) to exactly the pixels rendered */
+static int check_png(const vrDisplay *d, const char *dir, int eye, int width, int height)
+{
+    char path[256];
+    png_image img;
+    unsigned char *buf;
+    int same;
+    snprintf(path, sizeof path, "%s/frame-000003-%s.png", dir, eye ? "right" : "left");
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    ENSURE_MSG(png_image_begin_read_from_file(&img, path), "%s: %s", path, img.message);
+    ENSURE((int)img.width == width && (int)img.height == height);
+    img.format = PNG_FORMAT_RGB;
+    buf = malloc(PNG_IMAGE_SIZE(img));
+    ENSURE(buf && png_image_finish_read(&img, NULL, buf, 0, NULL));
+    same = memcmp(buf, vrDisplay_Pixels(d, eye, NULL, NULL), (size_t)width * height * 3) == 0;
+    free(buf);
+    ENSURE(same);
+    return 0;
+}
+
+static int test_png_frames_decode_to_the_rendered_pixels(void)
+{
+    Scene s = scene(64, 40);
+    double h[3] = {0.5, 0.5, 0.5}, c[3] = {0, 0, 0};
+    char dir[64], ppm[128];
+    struct stat sb;
+    ENSURE(make_tmpdir(dir, sizeof dir) == 0);
+    ENSURE(add_box(s.w, "box", c, h, 10, 20, 30, 0) != VR_NO_OBJECT);
+    ENSURE(show(&s) == 0);
+    ENSURE_MSG(vrDisplay_WriteFrames(s.d, dir, 3, VR_FRAMES_PNG, err, sizeof err) == 0, "%s", err);
+    ENSURE(check_png(s.d, dir, 0, 64, 40) == 0);
+    ENSURE(check_png(s.d, dir, 1, 64, 40) == 0);
+    snprintf(ppm, sizeof ppm, "%s/frame-000003-left.ppm", dir);
+    ENSURE(stat(ppm, &sb) != 0);      /* PNG instead of PPM, not beside it */
     done(&s);
     ENSURE(remove_tree(dir) == 0);
     return 0;
@@ -547,9 +589,9 @@ static int test_unwritable_frames_folder_is_a_clear_error(void)
     ENSURE(show(&s) == 0);
     /* a folder below a plain file, and the plain file as the folder */
     snprintf(sub, sizeof sub, "%s/frames", file);
-    ENSURE(vrDisplay_WriteFrames(s.d, sub, 0, err, sizeof err) == -1);
+    ENSURE(vrDisplay_WriteFrames(s.d, sub, 0, VR_FRAMES_PPM, err, sizeof err) == -1);
     ENSURE_MSG(strstr(err, "frames folder") && strstr(err, "plain-file"), "%s", err);
-    ENSURE(vrDisplay_WriteFrames(s.d, file, 0, err, sizeof err) == -1);
+    ENSURE(vrDisplay_WriteFrames(s.d, file, 0, VR_FRAMES_PPM, err, sizeof err) == -1);
     ENSURE_MSG(strstr(err, "plain-file"), "%s", err);
     kept = read_file(file, &size);
     ENSURE(kept && size == 8 && memcmp(kept, "keep me\n", 8) == 0);   /* untouched */
@@ -609,6 +651,7 @@ static const vrTest tests[] = {
     TEST(test_see_through_draws_real_objects_wire_hidden_or_solid),
     TEST(test_real_object_hides_virtual_object_behind_it),
     TEST(test_frames_are_well_formed_ppm_in_a_created_folder),
+    TEST(test_png_frames_decode_to_the_rendered_pixels),
     TEST(test_rendering_is_deterministic),
     TEST(test_unwritable_frames_folder_is_a_clear_error),
     TEST(test_bad_resolution_is_an_error_and_the_display_survives),

@@ -20,6 +20,10 @@ need libglib2.0-dev     pkg-config --exists glib-2.0
 need libreadline-dev    have_file /usr/include/readline/readline.h
 need pkg-config         command -v pkg-config
 need netpbm             command -v pnmtopng
+need libpng-dev         have_file /usr/include/png.h
+need libglfw3-dev       have_file /usr/include/GLFW/glfw3.h
+need xvfb               command -v Xvfb
+need xdotool            command -v xdotool
 need iproute2           command -v ip
 need util-linux         command -v unshare
 need groff-base         command -v groff
