@@ -6,6 +6,9 @@
 #   make check    every test, built with ASan+UBSan (last line: N passed, M failed)
 #   make demo     runs scenes/demo.cmd and writes its frames and a picture
 #   make bench    prints the benchmarks (release build, bench/run.sh)
+#   make fuzz     AFL++ for FUZZ_S seconds (last line: fuzz: N execs, M crashes, K hangs)
+#   make valgrind memcheck on every feature but the drawing (also in make check)
+#   make lint     cppcheck, clang-tidy (.clang-tidy), gcc -fanalyzer (last line: lint: N findings ...)
 #   make deps     installs the Debian packages when missing
 #   make install  under PREFIX (bin/, lib/vroc/, share/man/man1/)
 #
@@ -44,6 +47,11 @@ rel_CFLAGS  = $(rel_OPT) -ffat-lto-objects
 asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 rel_LDFLAGS  = $(rel_OPT)
 asan_LDFLAGS = -fsanitize=address,undefined
+# build/fuzz: the library and shell compiled by afl-clang-fast for `make fuzz`
+# (AFL++'s coverage instrumentation; no sanitizers: a crash AFL++ finds is
+# replayed under build/asan, where it becomes a test)
+fuzz_CFLAGS  = -O2 -g
+fuzz_LDFLAGS =
 
 LIB_SRC    := $(filter-out src/render.c src/window_glfw.c,$(wildcard src/*.c src/parallel/*.c))
 LCM_TYPES  := $(wildcard src/parallel/*.lcm)
@@ -57,7 +65,7 @@ PRODUCTS = libvroc.a vroc vroc-gp vroc-render.so vroc-window.so
 # copied to tools/NAME
 TOOLS = vroc-sound vroc-tracker
 
-.PHONY: all deps check check-asan demo bench install clean
+.PHONY: all deps check check-asan demo bench install clean fuzz valgrind lint
 .SECONDARY: $(LCM_GEN)
 .DELETE_ON_ERROR:
 
@@ -79,9 +87,13 @@ tools/%: build/rel/%
 # LCM message types: C code generated at build time, never checked in.  The
 # generated code is not -pedantic clean (function pointer <-> void *), so it
 # is compiled with those two warnings off.
-build/gen/vroc_%.c: src/parallel/%.lcm | build/deps.stamp
+# Each decoder is patched by tools/lcm-guard.sed: LCM 1.3's trust a
+# message's array counts (see there); the grep makes sure none is missed.
+build/gen/vroc_%.c: src/parallel/%.lcm tools/lcm-guard.sed | build/deps.stamp
 	@mkdir -p build/gen
 	lcm-gen -c --c-cpath build/gen --c-hpath build/gen $<
+	sed -E -i -f tools/lcm-guard.sed $@
+	@! grep -n 'p\[element\]\.[a-z0-9_]* = .*lcm_malloc' $@ || { echo "$@: an array tools/lcm-guard.sed missed" >&2; exit 1; }
 # the header comes with the .c: a type's other users (its .d files name the
 # header) are rebuilt after it changes, not compiled against the old one
 build/gen/vroc_%.h: build/gen/vroc_%.c ;
@@ -151,7 +163,50 @@ $(1)-all: build/$(1)/libvroc.a build/$(1)/vroc build/$(1)/vroc-gp build/$(1)/vro
 -include $$($(1)_OBJ:.o=.d) $$(patsubst %.c,build/$(1)/%.d,$$(SHELL_SRC) $$(TEST_SRC) $$(BENCH_SRC) shell/gp_main.c) \
          $$(patsubst %,build/$(1)/tools/src/%.d,$$(TOOLS))
 endef
-$(foreach v,rel asan,$(eval $(call VARIANT,$(v))))
+$(foreach v,rel asan fuzz,$(eval $(call VARIANT,$(v))))
+
+# ---- make fuzz (SPEC 11): AFL++ on the command parser, the OFF reader and
+# LCM message decoding.  Harnesses in tools/fuzz/ (not tests/: every
+# tests/*.c is linked into the test runner).  FUZZ_S seconds in all, shared
+# by the targets; FUZZ_TARGETS picks some.  Writes only under build/fuzz/.
+FUZZ_S ?= 60
+FUZZ_TARGETS ?= shell off lcm
+FUZZ_BIN := $(patsubst %,build/fuzz/fuzz-%,shell off lcm) build/fuzz/lcm-seeds
+build/fuzz/%: CC = afl-clang-fast
+build/fuzz/%: export AFL_QUIET = 1
+# AFL++'s persistent-mode macros are not ISO C (statement expressions)
+build/fuzz/tools/fuzz/%.o: WARN += -Wno-pedantic -Wno-gnu-statement-expression
+build/fuzz/tools/fuzz/%.o: INCS += -Ishell -Isrc/parallel
+build/fuzz/tools/fuzz/%.o: | build/fuzz.stamp
+build/fuzz.stamp: tools/install-deps.sh
+	@sh tools/install-deps.sh fuzz
+	@mkdir -p build && touch $@
+$(fuzz_OBJ): | build/fuzz.stamp
+
+build/fuzz/fuzz-shell: build/fuzz/tools/fuzz/fuzz_shell.o $(patsubst %.c,build/fuzz/%.o,$(filter-out shell/main.c,$(SHELL_SRC))) build/fuzz/libvroc.a
+	$(CC) -o $@ $^ $(RL_LIBS) $(LIBS)
+build/fuzz/fuzz-off build/fuzz/fuzz-lcm: build/fuzz/fuzz-%: build/fuzz/tools/fuzz/fuzz_%.o build/fuzz/libvroc.a
+	$(CC) -o $@ $^ $(LIBS)
+build/fuzz/lcm-seeds: build/fuzz/tools/fuzz/lcm_seeds.o build/fuzz/libvroc.a
+	$(CC) -o $@ $^ $(LIBS)
+
+fuzz: $(FUZZ_BIN)
+	@sh tools/fuzz/afl.sh "$(FUZZ_S)" $(FUZZ_TARGETS)
+
+# ---- make valgrind (SPEC 11): memcheck on the release build, every feature
+# but the drawing; about 2 minutes on 2 shared cores, so make check runs it
+# too (tests/valgrind.sh is one of its suites) and it cannot rot.
+valgrind: rel-all
+	@sh tests/valgrind.sh
+
+# ---- make lint: cppcheck, clang-tidy (its checks and the reasons for them
+# in .clang-tidy) and gcc -fanalyzer, over src/, shell/ and tools/fuzz/
+# (tools/lint.sh); false positives are silenced inline, with the reason.
+build/lint.stamp: tools/install-deps.sh
+	@sh tools/install-deps.sh lint
+	@mkdir -p build && touch $@
+lint: $(LCM_GEN) build/lint.stamp
+	@sh tools/lint.sh
 
 check: check-asan
 

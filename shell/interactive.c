@@ -243,6 +243,7 @@ int sh_interactive(Shell *sh)
 {
     Source src;
     sh_source_init(&src, "<stdin>", "");
+    /* cppcheck-suppress autoVariables ; set back to NULL before this returns */
     sh->src = &src;
     the_shell = sh;
     printf("VROC %s, Virtual and Real Object Collisions (Aliaga 1993); type help for the commands\n", VROC_VERSION);

@@ -31,7 +31,7 @@ int run_object(Shell *sh, const Stmt *st, char *err, size_t n)
 /* K_NUM, K_INT, K_VEC3, K_IVEC3 values into the field at c->offset of base */
 void sh_store_number(void *base, const Stmt *st)
 {
-    char *field = (char *)base + st->cmd->offset;
+    void *field = (char *)base + st->cmd->offset;
     int i;
     switch (st->cmd->kind) {
     case K_NUM: *(double *)field = st->v[0]; break;
@@ -105,9 +105,11 @@ static void show_attr(const Command *c, const vrObjectDef *d)
         vrFormatDouble(b, d->mass_set ? d->mass : d->volume);
         fputs(b, stdout);
     } else if (c->kind == K_NUM) {
+        /* cppcheck-suppress invalidPointerCast ; field is a double of vrObjectDef, at its offsetof */
         vrFormatDouble(b, *(const double *)field);
         fputs(b, stdout);
     } else if (c->kind == K_INT) printf("%d", *(const int *)field);
+    /* cppcheck-suppress invalidPointerCast ; field is a double[3] of vrObjectDef, at its offsetof */
     else if (c->kind == K_VEC3) put_doubles((const double *)field, 3);
     else if (c->kind == K_IVEC3) printf("(%d, %d, %d)", d->color[0], d->color[1], d->color[2]);
     else if (c->kind == K_AXIS) {

@@ -297,6 +297,7 @@ int vrContact_Within(const vrShape *a, const vrPose *pa, const vrShape *b, const
     double dw;
     if (!seen) seen = &c;
     if (a->kind == VR_SHAPE_SPHERE || b->kind == VR_SHAPE_SPHERE || !a->poly || !b->poly || !cache) {
+        seen->dist = INFINITY;   /* a shape without its polyhedron is measured as far: never within */
         contact(a, pa, b, pb, -1, cache, seen);
         return seen->dist <= d;
     }

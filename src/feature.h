@@ -82,6 +82,7 @@ static inline int vrPolyhedron_OtherEnd(const vrPolyhedron *p, int e, int v) { r
 /* how far x (body frame) lies above the plane of face f */
 static inline double vrPolyhedron_FaceHeight(const vrPolyhedron *p, int f, vec3 x)
 {
+    /* NOLINTNEXTLINE(clang-analyzer-core.UndefinedBinaryOperatorResult): polyhedron.c sets every face's offset when it builds one */
     return vec3_dot(p->face_normal[f], x) - p->face_offset[f];
 }
 

@@ -132,6 +132,7 @@ static int add_contact(Island *is, const vrTouch *k, int ia, int ib, double mu)
 static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrIslandContact *c, double gc, double h,
                        double v_rest, vec3 gh)
 {
+    /* NOLINTNEXTLINE(clang-analyzer-core.NullDereference): solve_one's first loop added a contact for each touch its second gives here */
     const vrIslandBody *A = &is->body[c->a], *B = &is->body[c->b];
     double e = fmin(w->table.obj[k->a]->body.elasticity, w->table.obj[k->b]->body.elasticity);
     double lift = vec3_dot(c->n, vec3_sub(B->dynamic ? gh : vec3_zero(), A->dynamic ? gh : vec3_zero()));
@@ -210,6 +211,7 @@ static int leave_contact(vrWorld *w, const int *in_island, double t, vrUpdate *u
     for (i = 0; i < w->table.n; i++) {
         vrObject *o = w->table.obj[i];
         vrBodyState *st;
+        /* NOLINTNEXTLINE(clang-analyzer-core.uninitialized.Branch): step() set in_island for every object first */
         if (!o || !o->live || !o->body.contact || o->body.resting || in_island[i]) continue;
         if (!(st = vrUpdate_Body(up, &o->body, t))) return -1;
         st->contact = 0;
@@ -261,8 +263,8 @@ static int instant(vrWorld *w, int *parent, int *in_island, double t, int a, int
         const vrTouch *c = &w->touches.t[k];
         if (c->leaving <= 0 && moving(w, c->a) && moving(w, c->b)) join(parent, c->a, c->b);
     }
-    ra = moving(w, a) ? root(parent, a) : -1;
-    rb = moving(w, b) ? root(parent, b) : -1;
+    ra = a >= 0 && moving(w, a) ? root(parent, a) : -1;   /* a, b < 0: no pair (clang-tidy) */
+    rb = b >= 0 && moving(w, b) ? root(parent, b) : -1;
     if (ra >= 0) rc = solve_one(w, &is, parent, ra, t, 0, up);
     if (rc == 0 && rb >= 0 && rb != ra) rc = solve_one(w, &is, parent, rb, t, 0, up);
     free(is.id);
@@ -357,6 +359,7 @@ static int touches_pair(const vrWorld *w, int a, int b)
     vrTouch key;
     const vrTouch *k;
     key.a = a < b ? a : b, key.b = a < b ? b : a;
+    /* cppcheck-suppress uninitvar ; by_pair reads a and b only */
     k = w->touches.n ? bsearch(&key, w->touches.t, (size_t)w->touches.n, sizeof key, by_pair) : NULL;
     return k && k->leaving <= 0;
 }

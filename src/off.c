@@ -227,6 +227,7 @@ static int read_faces(Reader *r, Off *o, char *err, size_t errlen)
 {
     int f, rc = 0, *seen = malloc(sizeof *seen * o->nv); /* the vertices are all read: nv is real */
     if (!seen) rc = vrGeom_Fail(err, errlen, "out of memory");
+    /* NOLINTNEXTLINE(clang-analyzer-core.NullDereference): vrGeom_Fail returns -1: rc is set when seen is NULL */
     for (f = 0; rc == 0 && f < o->nv; f++) seen[f] = -1;
     for (f = 0; rc == 0 && f < o->nf; f++) {
         rc = expect_line(r, "face", f, o->nf, err, errlen);
@@ -340,6 +341,7 @@ static int hull_of(const Off *o, const char *path, vrPolyhedron **out, char *err
         return vrGeom_Fail(err, errlen, "%s: %s", path, msg);
     }
     for (i = 0; i < o->nv; i++) hullv[i] = -1;
+    /* NOLINTNEXTLINE(clang-analyzer-unix.Malloc): a hull has 4 vertices or more (HullTol refuses fewer), so src is not empty */
     for (i = 0; i < (*out)->nv; i++) hullv[src[i]] = i;
     rc = check_vertices(o, *out, hullv, tol, path, err, errlen);
     if (rc == 0) rc = check_faces(o, *out, hullv, tol, path, err, errlen);

@@ -19,6 +19,15 @@
  * non-overlapping (Shewchuk sec. 2); its sign is that of its last term. */
 #define EXP_MAX 192 /* the 3x3 determinant of exact differences needs <= 192 terms */
 
+/* gcc 12's -fanalyzer does not follow the expansions through the loops
+ * that fill them (every h[k] and d[r][i] is written before it is read, and
+ * two_sum and two_product are given only those): a false positive, on
+ * this section only (make lint) */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wanalyzer-use-of-uninitialized-value"
+#endif
+
 static void two_sum(double a, double b, double *x, double *y)
 {
     double s = a + b, bv = s - a, av = s - bv;
@@ -113,11 +122,15 @@ static double det_exact(vec3 a, vec3 b, vec3 c, vec3 p)
         for (q = 0; q < n2; q++) m2[q] = -m2[q];
         nm = exp_sum(n1, m1, n2, m2, minor);
         nt = exp_mul(nm, minor, d[0][i].n, d[0][i].c, term);
+        /* cppcheck-suppress uninitvar ; n is 0 the first time round: nothing of acc is read */
         memcpy(old, acc, sizeof *acc * n);
         n = exp_sum(n, old, nt, term, acc);
     }
     return acc[n - 1];
 }
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 
 /* First in long double with Shewchuk's error bound (o3derrboundA) for its
  * precision, which settles all but (nearly) exact zeros; those exactly. */

@@ -136,6 +136,7 @@ int vrPolyhedron_Sphere(double radius, int ures, int vres, vrPolyhedron **out, c
                                            errlen);
     }
     if (rc == 0) /* drawn as the sphere it stands for */
+        /* NOLINTNEXTLINE(clang-analyzer-core.NullDereference): rc is vrGeom_Fail's -1 whenever *out is not made */
         for (v = 0; v < (*out)->nv; v++) (*out)->vert_normal[v] = vec3_normalize((*out)->vert[v]);
     free(pts);
     free(start);

@@ -419,6 +419,7 @@ static int collect_triangles(const Hull *h, vrHullMesh *t)
         if (id[f] < 0) continue;
         for (i = 0; i < 3; i++) {
             t->v[id[f]][i] = h->face[f].v[i];
+            /* NOLINTNEXTLINE(clang-analyzer-core.uninitialized.Assign): a face's neighbours are faces < nface, all given an id */
             t->nb[id[f]][i] = id[h->face[f].nb[i]];
         }
     }

@@ -30,6 +30,7 @@ static int reduce(P2 *p, int n)
         int best = 0;
         for (i = 1; i < n; i++)
             if (p2_dot(d, p[i]) > p2_dot(d, p[best])) best = i;
+        /* cppcheck-suppress uninitvar ; idx[0..k-1] are the k written before */
         for (i = k; i > 0 && idx[i - 1] > best; i--) idx[i] = idx[i - 1];
         idx[i] = best;
     }

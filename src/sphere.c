@@ -24,7 +24,8 @@ vrNear vrNear_Sphere(vec3 centre, double r, vec3 c)
  * nearest face (lowest axis on ties) */
 vrNear vrNear_Box(const vrShape *box, const vrPose *pose, vec3 c)
 {
-    double x[3], h[3] = {box->half.x, box->half.y, box->half.z}, q[3];
+    /* q zeroed only for gcc -fanalyzer, which does not see the loop fill it */
+    double x[3], h[3] = {box->half.x, box->half.y, box->half.z}, q[3] = {0, 0, 0};
     vec3 xl = vrPose_invapply(pose, c);
     int i, inside = 1, axis = 0;
     vrNear nr;

@@ -25,7 +25,7 @@ int vrWorld_ListDynamic(vrWorld *w)
         vrObject *o = w->table.obj[i];
         w->dyn_slot[i] = -1;
         if (!o || !o->live || o->body.is_static) continue;
-        if (vrGrow((void **)&w->dyn, &w->dyncap, w->ndyn + 1, sizeof *w->dyn) != 0) return -1;
+        if (vrGrow((void **)&w->dyn, &w->dyncap, w->ndyn + 1, sizeof *w->dyn) != 0) return -1; /* NOLINT(bugprone-sizeof-expression): an array of pointers */
         w->dyn_slot[i] = w->ndyn;
         w->dyn[w->ndyn++] = &o->body;
     }

@@ -46,7 +46,7 @@ static int room_for_one_more(vrTable *t, char *err, size_t n)
     vrObject **no;
     if (t->n < t->cap) return 0;
     cap = t->cap ? 2 * t->cap : 64;
-    no = realloc(t->obj, (size_t)cap * sizeof *no);
+    no = realloc(t->obj, (size_t)cap * sizeof *no); /* NOLINT(bugprone-sizeof-expression): an array of pointers */
     if (!no) return vrGeom_Fail(err, n, "out of memory");
     t->obj = no;
     t->cap = cap;

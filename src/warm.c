@@ -49,6 +49,7 @@ static const vrWarmContact *find(const vrWarm *w, int a, int b)
 {
     vrWarmContact key;
     key.a = a, key.b = b;
+    /* cppcheck-suppress uninitvar ; by_pair reads a and b only */
     return w->n ? bsearch(&key, w->c, (size_t)w->n, sizeof *w->c, by_pair) : NULL;
 }
 

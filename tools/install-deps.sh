@@ -2,6 +2,9 @@
 # Install the Debian packages VROC needs, only when a check says one is missing,
 # so that a machine that has everything pays nothing (make deps runs this).
 # Idempotent, non-interactive; needs root (or sudo) only when it installs.
+# Usage: install-deps.sh [fuzz] [lint] — the build's packages, and those of
+# `make fuzz` (AFL++) and `make lint` (cppcheck, clang-tidy) when named:
+# only those targets need them.
 set -eu
 
 missing=""
@@ -29,6 +32,15 @@ need util-linux         command -v unshare
 need groff-base         command -v groff
 need man-db             command -v man
 need libsndfile1-dev    have_file /usr/include/sndfile.h
+need valgrind           command -v valgrind     # make valgrind, run by make check
+for group in "$@"; do
+    case $group in
+    fuzz) need afl++     command -v afl-clang-fast ;;
+    lint) need cppcheck  command -v cppcheck
+          need clang-tidy command -v clang-tidy ;;
+    *) echo "install-deps: unknown group '$group' (fuzz, lint)" >&2; exit 2 ;;
+    esac
+done
 
 [ -z "$missing" ] && exit 0
 

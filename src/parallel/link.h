@@ -10,6 +10,7 @@
 #define VROC_LINK_H
 
 #include <stddef.h>
+#include <string.h>
 #include <lcm/lcm.h>
 
 typedef struct vrLink {
@@ -41,13 +42,17 @@ void vrBuf_Free(vrBuf *b);
 /* Defines `static void name(...)`, an LCM subscriber for messages of the
  * generated type T whose user data is a Ctx *: the message is decoded,
  * given to take(ctx, &msg) and freed; one that does not decode goes to
- * malformed(ctx) instead.  (Receivers subscribe raw: see above.) */
+ * malformed(ctx) instead, after what its decoding allocated is freed (the
+ * message starts zeroed, and tools/lcm-guard.sed makes the decoders leave
+ * only what cleanup can free).  (Receivers subscribe raw: see above.) */
 #define VR_HANDLER(name, T, Ctx, take, malformed)                                        \
     static void name(const lcm_recv_buf_t *rb, const char *channel, void *user)          \
     {                                                                                    \
         T msg;                                                                           \
         (void)channel;                                                                   \
+        memset(&msg, 0, sizeof msg);                                                     \
         if (T##_decode(rb->data, 0, (int)rb->data_size, &msg) < 0) {                     \
+            T##_decode_cleanup(&msg);                                                    \
             malformed((Ctx *)user);                                                      \
             return;                                                                      \
         }                                                                                \

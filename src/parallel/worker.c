@@ -30,6 +30,9 @@
 #include "vroc_update_t.h"
 
 #define HELLO_MS 100.0      /* announcements while free, heartbeats while busy */
+/* A setup's object ids index the worker's table: a malformed one of 2^30
+ * grew it for minutes (make fuzz).  Ids at or past this are refused. */
+#define MAX_ID (1 << 20)
 
 struct vrWorker {
     vrLink *link;
@@ -165,7 +168,8 @@ static int set_up(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
     k->owner = NULL;
     for (i = 0; i < m->nbodies; i++) {
         vrObjectDef d;
-        if (vrWire_GetDef(&m->defs[i], &d) != 0) return snprintf(err, n, "bad object definition"), -1;
+        if (vrWire_GetDef(&m->defs[i], &d) != 0 || m->defs[i].id < 0 || m->defs[i].id >= MAX_ID)
+            return snprintf(err, n, "bad object definition"), -1;
         if (vrTable_Put(&k->objects, m->defs[i].id, &d, m->defs[i].off, err, n) != 0) return -1;
     }
     for (i = 0; i < k->objects.n; i++)   /* placed: their states follow */
@@ -367,6 +371,7 @@ static void parse_kill(vrWorker *k)
     const char *v = getenv("VROC_FAULT_KILL");
     k->kill_gp = k->kill_frame = -1;
     k->kill_round = 0;
+    /* NOLINTNEXTLINE(cert-err34-c): a test's fault knob; less than gp:frame reads as none */
     if (v && sscanf(v, "%d:%d:%d", &k->kill_gp, &k->kill_frame, &k->kill_round) < 2) k->kill_gp = k->kill_frame = -1;
 }
 
