@@ -112,9 +112,13 @@ build/$(1)/%.o: %.c | $$(LCM_GEN) build/deps.stamp
 
 build/$(1)/shell/%.o: INCS = $$(SHELL_INCS)
 
+# -fno-strict-aliasing: LCM's coretypes decode a double through an int64_t
+# pointer; with the message zeroed first (link.h's VR_HANDLER), -O3 with
+# link-time optimisation kept the zeros and the release build's in-process
+# workers stopped answering (a pile with gps = 2, lcm_url = memq://)
 build/$(1)/gen/%.o: build/gen/%.c | $$(LCM_GEN)
 	@mkdir -p $$(@D)
-	$$(CC) $$(WARN) -Wno-pedantic -Wno-format -Wno-unused-parameter $$(DEFS) -Ibuild/gen $$($(1)_CFLAGS) -MMD -MP -c $$< -o $$@
+	$$(CC) $$(WARN) -Wno-pedantic -Wno-format -Wno-unused-parameter -fno-strict-aliasing $$(DEFS) -Ibuild/gen $$($(1)_CFLAGS) -MMD -MP -c $$< -o $$@
 
 build/$(1)/libvroc.a: $$($(1)_OBJ)
 	rm -f $$@
