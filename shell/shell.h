@@ -44,6 +44,7 @@ typedef struct Shell {
     char run_origin[VR_PATH_MAX + 32]; /* "FILE:LINE" of that `start`, for its errors */
     double next_frame;           /* monotonic seconds when the next real-time frame is due */
     long errors;                 /* errors so far: the exit status */
+    int clamp_noted;             /* the note on the first speed clamp was given (or a cap was set) */
     Source *src;                 /* the innermost source being read */
 } Shell;
 

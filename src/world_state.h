@@ -62,6 +62,7 @@ struct vrWorld {
     long long collisions;
     long long island_steps;  /* island steps that solved an island */
     long long island_contacts; /* contacts those steps solved */
+    long long clamps;        /* velocities the speed caps cut (stats clamps) */
     double frame_ms, sim_ms, render_ms;
     /* `random` */
     int random_next;

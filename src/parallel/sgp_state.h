@@ -54,7 +54,7 @@ struct vrSgp {
     int frame_open;
     int frame_fresh;            /* the frame opened with an island step: its frame_start not sent yet */
     vrUpdate snap, snap_pending;   /* the frame start, to redo the frame */
-    long long snap_collisions, snap_island_steps, snap_island_contacts;
+    long long snap_collisions, snap_island_steps, snap_island_contacts, snap_clamps;
     vrGpCounts snap_counts[VR_MAX_GPS];  /* each worker's counts then (before + now) */
     long long requests, received, foreign, malformed;
     lcm_subscription_t *subs[4];
