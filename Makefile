@@ -227,7 +227,7 @@ install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/vroc $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 755 vroc vroc-gp $(patsubst %,tools/%,$(TOOLS)) $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 vroc-render.so vroc-window.so $(DESTDIR)$(PREFIX)/lib/vroc/
-	install -m 644 man/vroc.1 $(DESTDIR)$(PREFIX)/share/man/man1/
+	install -m 644 man/vroc.1 man/vroc-gp.1 $(DESTDIR)$(PREFIX)/share/man/man1/
 
 clean:
 	rm -rf build $(PRODUCTS) $(patsubst %,tools/%,$(TOOLS))

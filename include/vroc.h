@@ -31,6 +31,20 @@ typedef int vrObjectId;
 #define VR_NAME_MAX 63   /* bytes of an object name */
 #define VR_PATH_MAX 1024
 
+/* Sane limits (SPEC 11): the checks of vrObjectDef and vrSettings refuse
+ * values outside them, so that no product of two of them overflows or
+ * rounds to nothing (man vroc, LIMITS). */
+#define VR_LENGTH_MIN 1e-6        /* m: sizes, radii, collision_dist */
+#define VR_LENGTH_MAX 1e6         /* m: sizes and |coordinates| */
+#define VR_MASS_MIN 1e-9          /* kg, and m^3 for a volume (it is the mass) */
+#define VR_MASS_MAX 1e12
+#define VR_SPEED_MAX 1e6          /* m/s and rad/s: |velocity components|, the caps */
+#define VR_ACCEL_MAX 1e6          /* m/s^2: the global force's magnitude */
+#define VR_TIME_MAX 1e3           /* s: time_step, internal_step */
+#define VR_SCALE_MIN 1e-6         /* a polyhedron's scale factors */
+#define VR_SCALE_MAX 1e6
+#define VR_FRAME_STEPS_MAX 1000000 /* internal steps in one frame: more is refused */
+
 typedef enum vrObjectType { VR_SPHERE, VR_CUBE, VR_SUPERQUADRIC, VR_POLYHEDRON } vrObjectType;
 
 /* SPEC 1.3 `state` column */
@@ -58,6 +72,7 @@ typedef struct vrObjectDef {
     double exp1, exp2;        /* superquadric exponents 0.05..2, 1.0 */
     double a1, a2, a3;        /* superquadric radii, 1.0 */
     char file[VR_PATH_MAX];   /* polyhedron: OFF file path (as the caller resolved it) */
+    double scale[3];          /* polyhedron: the OFF vertices' scale factors, (1,1,1) */
     int real;                 /* 1: a model of a real object (see-through drawing) */
 } vrObjectDef;
 
@@ -155,6 +170,7 @@ typedef struct vrStats {
     double frame_ms, sim_ms, render_ms;
     long long island_steps;       /* island steps that solved an island (SPEC 7) */
     long long island_contacts;    /* the contacts those steps solved */
+    long long clamps;             /* velocities max_linear or max_angular cut (SPEC 11) */
     /* with workers */
     int gps;
     long long messages;

@@ -12,7 +12,7 @@
 #include "commands.h"
 #include "lexer.h"
 
-#define BIG 1e9   /* the library's ceiling for lengths, speeds and steps */
+/* the ranges are the library's sane limits (vroc.h VR_*_MIN/MAX, SPEC 11) */
 
 static const char *const distributions[] = {"round_robin", "improved", NULL};
 static const char *const frame_formats[] = {"ppm", "png", NULL};
@@ -35,28 +35,29 @@ const Command sh_commands[] = {
     OBJ_CMD("sphere", "create or select the sphere NAME"),
     OBJ_CMD("cube", "create or select the cube NAME"),
     OBJ_CMD("superquadric", "create or select the superquadric NAME"),
-    OBJ_CMD("polyhedron", "create or select the convex polyhedron NAME (from an OFF file)"),
+    OBJ_CMD("polyhedron", "create or select the polyhedron NAME (an OFF file's hull)"),
 
-    ATTR("linear_vel", "linear_vel = (x,y,z)", "initial linear velocity, m/s", "(0,0,0)", K_VEC3, R_ANY, 0, 0, linear_vel, TY_ALL),
-    ATTR("angular_vel", "angular_vel = (x,y,z)", "initial angular velocity, rad/s, world frame", "(0,0,0)", K_VEC3, R_ANY, 0, 0, angular_vel, TY_ALL),
+    ATTR("linear_vel", "linear_vel = (x,y,z)", "initial linear velocity, m/s", "(0,0,0)", K_VEC3, R_CLOSED, -VR_SPEED_MAX, VR_SPEED_MAX, linear_vel, TY_ALL),
+    ATTR("angular_vel", "angular_vel = (x,y,z)", "initial angular velocity, rad/s, world frame", "(0,0,0)", K_VEC3, R_CLOSED, -VR_SPEED_MAX, VR_SPEED_MAX, angular_vel, TY_ALL),
     ATTR("elasticity", "elasticity = e", "coefficient of restitution (1: no energy lost)", "default_elasticity", K_NUM, R_CLOSED, 0, 1, elasticity, TY_ALL),
     ATTR("friction", "friction = mu", "Coulomb friction coefficient (a pair: sqrt(mu1 mu2))", "default_friction", K_NUM, R_CLOSED, 0, 10, friction, TY_ALL),
-    ATTR("mass", "mass = m", "mass, kg; negative: static, never moves", "the volume", K_NUM, R_NONZERO, 0, 0, mass, TY_ALL),
-    ATTR("volume", "volume = v", "nominal volume, m^3: the mass when mass is not given", "1", K_NUM, R_GT, 0, 1e12, volume, TY_ALL),
-    ATTR("translate", "translate = (x,y,z)", "initial position of the modelling frame, m (replaces)", "(0,0,0)", K_VEC3, R_ANY, 0, 0, translate, TY_ALL),
+    ATTR("mass", "mass = m", "mass, kg; negative: static, never moves", "the volume", K_NUM, R_MASS, VR_MASS_MIN, VR_MASS_MAX, mass, TY_ALL),
+    ATTR("volume", "volume = v", "nominal volume, m^3: the mass when mass is not given", "1", K_NUM, R_CLOSED, VR_MASS_MIN, VR_MASS_MAX, volume, TY_ALL),
+    ATTR("translate", "translate = (x,y,z)", "initial position of the modelling frame, m (replaces)", "(0,0,0)", K_VEC3, R_CLOSED, -VR_LENGTH_MAX, VR_LENGTH_MAX, translate, TY_ALL),
     ATTR("rotate", "rotate = (x,y,z) r", "initial rotation, r radians about the axis (x,y,z) (replaces)", "none", K_AXIS, R_ANY, 0, 0, rotate_axis, TY_ALL),
     ATTR("color", "color = (r,g,b)", "colour", "(255,0,0)", K_IVEC3, R_CLOSED, 0, 255, color, TY_ALL),
-    ATTR("radius", "radius = r", "sphere radius, m", "1", K_NUM, R_GT, 0, BIG, radius, TY_SPHERE),
+    ATTR("radius", "radius = r", "sphere radius, m", "1", K_NUM, R_CLOSED, VR_LENGTH_MIN, VR_LENGTH_MAX, radius, TY_SPHERE),
     ATTR("ures", "ures = u", "tessellation: longitude steps (sphere, superquadric)", "10", K_INT, R_CLOSED, 3, 1000, ures, TY_SPHERE | TY_SQ),
     ATTR("vres", "vres = v", "tessellation: latitude bands (sphere, superquadric)", "10", K_INT, R_CLOSED, 3, 1000, vres, TY_SPHERE | TY_SQ),
-    ATTR("size", "size = (x,y,z)", "cube half-extents (\"radii\"), m", "(1,1,1)", K_VEC3, R_GT, 0, BIG, size, TY_CUBE),
+    ATTR("size", "size = (x,y,z)", "cube half-extents (\"radii\"), m", "(1,1,1)", K_VEC3, R_CLOSED, VR_LENGTH_MIN, VR_LENGTH_MAX, size, TY_CUBE),
     ATTR("exp1", "exp1 = e", "superquadric exponent e1 (Barr 1981)", "1", K_NUM, R_CLOSED, 0.05, 2, exp1, TY_SQ),
     ATTR("exp2", "exp2 = e", "superquadric exponent e2 (Barr 1981)", "1", K_NUM, R_CLOSED, 0.05, 2, exp2, TY_SQ),
-    ATTR("a1", "a1 = a", "superquadric x radius, m", "1", K_NUM, R_GT, 0, BIG, a1, TY_SQ),
-    ATTR("a2", "a2 = a", "superquadric y radius, m", "1", K_NUM, R_GT, 0, BIG, a2, TY_SQ),
-    ATTR("a3", "a3 = a", "superquadric z radius, m", "1", K_NUM, R_GT, 0, BIG, a3, TY_SQ),
+    ATTR("a1", "a1 = a", "superquadric x radius, m", "1", K_NUM, R_CLOSED, VR_LENGTH_MIN, VR_LENGTH_MAX, a1, TY_SQ),
+    ATTR("a2", "a2 = a", "superquadric y radius, m", "1", K_NUM, R_CLOSED, VR_LENGTH_MIN, VR_LENGTH_MAX, a2, TY_SQ),
+    ATTR("a3", "a3 = a", "superquadric z radius, m", "1", K_NUM, R_CLOSED, VR_LENGTH_MIN, VR_LENGTH_MAX, a3, TY_SQ),
     {"file", "file = path.off", "polyhedron: its OFF file (the rest of the line)", NULL, G_ATTR, F_ASSIGN, K_TEXT,
      R_ANY, 0, VR_PATH_MAX - 1, 0, NULL, T_OBJECT, offsetof(vrObjectDef, file), TY_POLY, run_attr},
+    ATTR("scale", "scale = s | (sx,sy,sz)", "polyhedron: its OFF vertices times s (each axis)", "1", K_SCALE, R_CLOSED, VR_SCALE_MIN, VR_SCALE_MAX, scale, TY_POLY),
     ATTR("real", "real = 0|1", "1: a model of a real object (see_through draws it differently)", "0", K_INT, R_CLOSED, 0, 1, real, TY_ALL),
 
     VERB("read", "read FILE", "read commands from FILE (relative to the file that reads it)", G_SYSTEM, F_PATH, R_ANY, 0, 0, run_read),
@@ -70,12 +71,13 @@ const Command sh_commands[] = {
     VERB("refresh", "refresh", "draw the current frame again, without advancing", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_display),
     VERB("help", "help [NAME]", "list the commands, or describe one", G_SYSTEM, F_TOPIC, R_ANY, 0, 0, sh_print_help),
     VERB("quit", "quit", "leave vroc", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_quit),
-    SETTING("time_step", "time_step = t", "frame time step, s (0 halts time)", "0.1", G_SYSTEM, K_NUM, R_GE, 0, BIG, time_step),
-    SETTING("collision_dist", "collision_dist = d", "collision distance: the contact envelope, m", "0.25", G_SYSTEM, K_NUM, R_GT, 0, BIG, collision_dist),
-    SETTING("internal_step", "internal_step = i", "force the internal step, s (0: automatic)", "0", G_SYSTEM, K_NUM, R_GE, 0, BIG, internal_step),
-    SETTING("max_linear", "max_linear = v", "maximum linear speed, m/s", "8", G_SYSTEM, K_NUM, R_GT, 0, BIG, max_linear),
-    SETTING("max_angular", "max_angular = v", "maximum angular speed, rad/s", "4", G_SYSTEM, K_NUM, R_GT, 0, BIG, max_angular),
-    SETTING("force", "force = (x,y,z) m", "global force: direction, and magnitude m/s^2 on every dynamic object", "(0,0,-1) 0", G_SYSTEM, K_AXIS, R_GE, 0, BIG, force_dir),
+    VERB("exit", "exit", "leave vroc (the same as quit)", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_quit),
+    SETTING("time_step", "time_step = t", "frame time step, s (0 halts time)", "0.1", G_SYSTEM, K_NUM, R_CLOSED, 0, VR_TIME_MAX, time_step),
+    SETTING("collision_dist", "collision_dist = d", "collision distance: the contact envelope, m", "0.25", G_SYSTEM, K_NUM, R_CLOSED, VR_LENGTH_MIN, VR_LENGTH_MAX, collision_dist),
+    SETTING("internal_step", "internal_step = i", "force the internal step, s (0: automatic)", "0", G_SYSTEM, K_NUM, R_CLOSED, 0, VR_TIME_MAX, internal_step),
+    SETTING("max_linear", "max_linear = v", "maximum linear speed, m/s", "8", G_SYSTEM, K_NUM, R_GT, 0, VR_SPEED_MAX, max_linear),
+    SETTING("max_angular", "max_angular = v", "maximum angular speed, rad/s", "4", G_SYSTEM, K_NUM, R_GT, 0, VR_SPEED_MAX, max_angular),
+    SETTING("force", "force = (x,y,z) m", "global force: direction, and magnitude m/s^2 on every dynamic object", "(0,0,-1) 0", G_SYSTEM, K_AXIS, R_CLOSED, 0, VR_ACCEL_MAX, force_dir),
     VERB("gravity", "gravity", "the same as force = (0,0,-1) 9.8", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_gravity),
     TEXT_SETTING("collision_sound", "collision_sound = s", "sound of collisions: a sound file or a built-in (the rest of the line)", "bounce", G_SYSTEM, K_TEXT, 1, 255, collision_sound),
     SETTING("collision_vol", "collision_vol = v", "volume of the collision sound", "1", G_SYSTEM, K_NUM, R_CLOSED, 0, 1, collision_vol),
@@ -102,9 +104,9 @@ const Command sh_commands[] = {
     {"seed", "seed = n", "seed of the stream that random draws from", "0", G_EXT, F_ASSIGN, K_UINT64, R_ANY, 0, 0, 0, NULL,
      T_SETTINGS, offsetof(vrSettings, seed), 0, run_setting},
     VERB("random", "random N", "add N random dynamic objects r0, r1, ... (thesis table 5.6)", G_EXT, F_INT, R_CLOSED, 1, 10000, run_random),
-    SETTING("room", "room = s", "put later random objects in a closed room of side s, m (0: none)", "0", G_EXT, K_NUM, R_CLOSED, 0, 1e6, room),
+    SETTING("room", "room = s", "put later random objects in a closed room of side s, m (0: none)", "0", G_EXT, K_NUM, R_CLOSED, 0, VR_LENGTH_MAX, room),
 
-    SETTING("sound_min_speed", "sound_min_speed = v", "the slowest impact that makes a sound, m/s", "0.5", G_EXT, K_NUM, R_GE, 0, BIG, sound_min_speed),
+    SETTING("sound_min_speed", "sound_min_speed = v", "the slowest impact that makes a sound, m/s", "0.5", G_EXT, K_NUM, R_CLOSED, 0, VR_SPEED_MAX, sound_min_speed),
     {"sound_log", "sound_log = FILE", "write collision sound events into FILE (empty: stop writing)", "none", G_EXT, F_ASSIGN,
      K_TEXT, R_ANY, 0, VR_PATH_MAX - 1, 1, NULL, T_NONE, 0, 0, run_sound_log},
     {"trackers", "trackers = URL", "take live head and hand samples from LCM at URL (empty: stop)", "none", G_EXT, F_ASSIGN,
@@ -112,11 +114,11 @@ const Command sh_commands[] = {
     VERB("track", "track FILE", "play a track file (head and hand samples) from now, in simulation time", G_EXT, F_PATH, R_ANY, 0, 0, run_track),
 
     VIEW("resolution", "resolution = (w,h)", "frame size, pixels", "(640,512)", K_IVEC2, R_CLOSED, 16, 8192, width),
-    VIEW("eye", "eye = (x,y,z)", "head (eye) position, m", "(0,-8,3)", K_VEC3, R_ANY, 0, 0, eye),
-    VIEW("look", "look = (x,y,z)", "the point looked at, m", "(0,0,1)", K_VEC3, R_ANY, 0, 0, look),
+    VIEW("eye", "eye = (x,y,z)", "head (eye) position, m", "(0,-8,3)", K_VEC3, R_CLOSED, -VR_LENGTH_MAX, VR_LENGTH_MAX, eye),
+    VIEW("look", "look = (x,y,z)", "the point looked at, m", "(0,0,1)", K_VEC3, R_CLOSED, -VR_LENGTH_MAX, VR_LENGTH_MAX, look),
     VIEW("up", "up = (x,y,z)", "the head's up direction", "(0,0,1)", K_VEC3, R_NONZERO, 0, 0, up),
-    VIEW("ipd", "ipd = m", "distance between the eyes, m", "0.064", K_NUM, R_GE, 0, BIG, ipd),
-    VIEW("focal", "focal = m", "distance where the eyes converge, m (0: |look - eye|)", "0", K_NUM, R_GE, 0, BIG, focal),
+    VIEW("ipd", "ipd = m", "distance between the eyes, m", "0.064", K_NUM, R_CLOSED, 0, VR_LENGTH_MAX, ipd),
+    VIEW("focal", "focal = m", "distance where the eyes converge, m (0: |look - eye|)", "0", K_NUM, R_CLOSED, 0, VR_LENGTH_MAX, focal),
     VIEW("fov", "fov = degrees", "vertical field of view", "45", K_NUM, R_CLOSED, 10, 120, fov),
     {"window_mode", "window_mode = mono|side|anaglyph", "the window: one view, the eyes side by side, or red-cyan", "mono", G_VIEW, F_ASSIGN,
      K_CHOICE, R_ANY, 0, 0, 0, window_modes, T_NONE, 0, 0, run_window_mode},
@@ -189,10 +191,11 @@ void sh_range_text(const Command *c, char *buf, size_t n)
         choice_list(c, buf, n);
         return;
     }
-    if (c->hi > 0) snprintf(upper, sizeof upper, ", at most %s", hi);
+    if (c->hi > 0 && c->range != R_MASS) snprintf(upper, sizeof upper, ", at most %s", hi);
     switch (c->range) {
     case R_ANY: snprintf(buf, n, "%s", c->kind == K_TEXT || c->kind == K_WORD || c->kind == K_NONE ? "" : "finite"); break;
     case R_NONZERO: snprintf(buf, n, "non-zero"); break;
+    case R_MASS: snprintf(buf, n, "< 0 (static) or %s..%s", lo, hi); break;
     case R_GT: snprintf(buf, n, "%s> %s%s", what, lo, upper); break;
     case R_GE: snprintf(buf, n, "%s>= %s%s", what, lo, upper); break;
     case R_CLOSED: snprintf(buf, n, "%s%s..%s", what, lo, hi); break;
@@ -206,6 +209,7 @@ static int in_range(const Command *c, double x)
     switch (c->range) {
     case R_ANY: return 1;
     case R_NONZERO: return x != 0;
+    case R_MASS: return x < 0 || (x >= c->lo && x <= c->hi);
     case R_GT: return x > c->lo && x <= c->hi;
     case R_GE:
     case R_CLOSED: return x >= c->lo && x <= c->hi;
@@ -280,6 +284,19 @@ static int axis_value(Lexer *lx, const Command *c, Stmt *st, char *err, size_t n
     return in_range(c, st->v[3]) ? 0 : range_error(c, "the magnitude of ", st->v[3], err, n);
 }
 
+/* one number for every axis, or a vector */
+static int scale_value(Lexer *lx, const Command *c, Stmt *st, char *err, size_t n)
+{
+    lx_skip_blanks(lx);
+    if (lx->p < lx->end && *lx->p == '(') {
+        if (lx_vector(lx, c->name, st->v, 3, err, n) != 0) return -1;
+    } else {
+        if (lx_number(lx, c->name, st->v, err, n) != 0) return -1;
+        st->v[1] = st->v[2] = st->v[0];
+    }
+    return check_numbers(c, st->v, 3, err, n);
+}
+
 static int parse_value(Lexer *lx, const Command *c, Stmt *st, char *err, size_t n)
 {
     switch (c->kind) {
@@ -295,6 +312,7 @@ static int parse_value(Lexer *lx, const Command *c, Stmt *st, char *err, size_t 
         if (lx_vector(lx, c->name, st->v, 2, err, n) != 0) return -1;
         return check_numbers(c, st->v, 2, err, n);
     case K_AXIS: return axis_value(lx, c, st, err, n);
+    case K_SCALE: return scale_value(lx, c, st, err, n);
     case K_TEXT:
     case K_WORD: return text_value(lx, c, st, err, n);
     case K_CHOICE: return choice_value(lx, c, st, err, n);

@@ -25,13 +25,15 @@ typedef enum Kind {
     K_IVEC3,       /* (r,g,b) integers in range */
     K_IVEC2,       /* (w,h) integers in range */
     K_AXIS,        /* (x,y,z) m: a non-zero vector and a number in range */
+    K_SCALE,       /* s or (x,y,z): three numbers in range, one given for all */
     K_TEXT,        /* the rest of the line (path or name); may be empty when allow_empty */
     K_WORD,        /* one word without blanks */
     K_CHOICE,      /* one of choices[] */
     K_UINT64       /* 0..2^64-1 */
 } Kind;
 
-typedef enum Range { R_ANY, R_GT, R_GE, R_CLOSED, R_NONZERO } Range;
+/* R_MASS: negative (static), or lo..hi */
+typedef enum Range { R_ANY, R_GT, R_GE, R_CLOSED, R_NONZERO, R_MASS } Range;
 
 /* where an attribute lives */
 typedef enum Target { T_NONE, T_OBJECT, T_SETTINGS, T_VIEW } Target;

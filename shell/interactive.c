@@ -21,6 +21,7 @@
 
 static Shell *the_shell;   /* readline's callbacks carry no user pointer */
 static int at_eof;
+static int handler_on;      /* readline's line handler is installed */
 /* SIGINT is blocked except while waiting for input (pselect) and while a
  * line runs: a Ctrl-C is then never lost between a check and the wait */
 static sigset_t interrupt_open, interrupt_blocked;
@@ -148,11 +149,20 @@ static void history_close(void)
 
 /* ---- the loop --------------------------------------------------------------- */
 
+/* The handler goes from inside the last line's callback: left installed,
+ * readline would show the prompt once more after Ctrl-D or quit. */
+static void remove_handler(void)
+{
+    if (handler_on) rl_callback_handler_remove();
+    handler_on = 0;
+}
+
 static void on_line(char *line)
 {
     Shell *sh = the_shell;
     if (!line) {
         at_eof = 1;
+        remove_handler();
         putchar('\n');
         return;
     }
@@ -165,6 +175,7 @@ static void on_line(char *line)
     sigprocmask(SIG_SETMASK, &interrupt_blocked, NULL);
     sh_interrupted = 0;   /* it belonged to that line */
     free(line);
+    if (sh->quit) remove_handler();
     fflush(stdout);
 }
 
@@ -196,9 +207,15 @@ static void on_interrupt(int sig)
     sh_interrupted = 1;
 }
 
-/* Ctrl-C at the prompt drops the line being typed, as a shell does */
-static void drop_line(void)
+/* Ctrl-C at the prompt stops a real-time `start`, as it stops a long
+ * `step`, and drops the line being typed, as a shell does */
+static void drop_line(Shell *sh)
 {
+    if (sh->running) {
+        sh->running = 0;
+        fflush(stdout);
+        fprintf(stderr, "\nvroc: %s: note: start stopped by Ctrl-C", sh->run_origin);
+    }
     sh_interrupted = 0;
     rl_free_line_state();
     rl_callback_sigcleanup();
@@ -253,10 +270,11 @@ int sh_interactive(Shell *sh)
     install_signals();
     history_open();
     rl_callback_handler_install(PROMPT, on_line);
+    handler_on = 1;
     while (!at_eof && !sh->quit) {
         int r = wait_input(sh);
         if (r < 0 && errno == EINTR) {
-            if (sh_interrupted) drop_line();
+            if (sh_interrupted) drop_line(sh);
             continue;
         }
         if (r < 0) break;
@@ -264,7 +282,7 @@ int sh_interactive(Shell *sh)
         if (r == 0 && sh_frame_wait(sh) == 0) tick(sh);
         else rl_callback_read_char();
     }
-    rl_callback_handler_remove();
+    remove_handler();
     sigprocmask(SIG_SETMASK, &interrupt_open, NULL);
     history_close();
     sh->src = NULL;

@@ -1,6 +1,7 @@
 /* lexer.c — SPEC 1's lexical rules.  Lines are whatever length getline
  * gave; nothing here copies a line or assumes a bound on it. */
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -191,6 +192,11 @@ int lx_number(Lexer *lx, const char *what, double *v, char *err, size_t n)
     if (e != q || isinf(*v) || isnan(*v)) {
         lx_quote(g, sizeof g, lx->p, (size_t)(q - lx->p));
         snprintf(err, n, "number %s for '%s' is too large (beyond 1.8e308)", g, what);
+        return -1;
+    }
+    if (errno == ERANGE && fabs(*v) < DBL_MIN) {   /* no silent zero (SPEC 11) */
+        lx_quote(g, sizeof g, lx->p, (size_t)(q - lx->p));
+        snprintf(err, n, "number %s for '%s' is too small (below 2.2e-308; write 0 for zero)", g, what);
         return -1;
     }
     lx->p = q;

@@ -18,12 +18,19 @@ static vrObjectType type_of_command(const Command *c)
     return (vrObjectType)t;
 }
 
+/* a reused name selects the original object, whatever the type word (the
+ * thesis's rule); a different type word says so, as a newcomer typing
+ * `cube ball` after `sphere ball` expects a new cube */
 int run_object(Shell *sh, const Stmt *st, char *err, size_t n)
 {
     vrObjectId id = vrWorld_FindObject(sh->world, st->name);
-    /* a reused name selects the original object, whatever the type word */
-    if (id == VR_NO_OBJECT && vrWorld_CreateObject(sh->world, st->name, type_of_command(st->cmd), &id, err, n) != 0)
-        return -1;
+    vrObjectType want = type_of_command(st->cmd);
+    vrObjectDef d;
+    if (id == VR_NO_OBJECT) {
+        if (vrWorld_CreateObject(sh->world, st->name, want, &id, err, n) != 0) return -1;
+    } else if (vrWorld_GetObjectDef(sh->world, id, &d) == 0 && d.type != want)
+        sh_note(sh, "'%s' is an existing %s: selected it (no %s made; delete %s first for a new one)", st->name,
+                type_names[d.type], type_names[want], st->name);
     sh->selected = id;
     return 0;
 }
@@ -37,6 +44,7 @@ void sh_store_number(void *base, const Stmt *st)
     case K_NUM: *(double *)field = st->v[0]; break;
     case K_INT: *(int *)field = (int)st->v[0]; break;
     case K_VEC3:
+    case K_SCALE:
     case K_AXIS:
         for (i = 0; i < 3; i++) ((double *)field)[i] = st->v[i];
         break;
@@ -110,7 +118,7 @@ static void show_attr(const Command *c, const vrObjectDef *d)
         fputs(b, stdout);
     } else if (c->kind == K_INT) printf("%d", *(const int *)field);
     /* cppcheck-suppress invalidPointerCast ; field is a double[3] of vrObjectDef, at its offsetof */
-    else if (c->kind == K_VEC3) put_doubles((const double *)field, 3);
+    else if (c->kind == K_VEC3 || c->kind == K_SCALE) put_doubles((const double *)field, 3);
     else if (c->kind == K_IVEC3) printf("(%d, %d, %d)", d->color[0], d->color[1], d->color[2]);
     else if (c->kind == K_AXIS) {
         put_doubles(d->rotate_axis, 3);

@@ -49,7 +49,8 @@ static void put_value(FILE *out, const char *indent, const Command *c, const voi
         if (c->offset == offsetof(vrSettings, max_frames) && c->target == T_SETTINGS) fprintf(out, "%ld", *(const long *)f);
         else fprintf(out, "%d", *(const int *)f);
         break;
-    case K_VEC3: put_vec(out, (const double *)f, 3); break;
+    case K_VEC3:
+    case K_SCALE: put_vec(out, (const double *)f, 3); break;
     case K_IVEC3: fprintf(out, "(%d, %d, %d)", ((const int *)f)[0], ((const int *)f)[1], ((const int *)f)[2]); break;
     case K_IVEC2: fprintf(out, "(%d, %d)", ((const int *)f)[0], ((const int *)f)[1]); break;
     case K_AXIS:   /* force's magnitude, rotate's angle: the double after the vector */

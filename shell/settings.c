@@ -26,8 +26,12 @@ static void store_setting(vrSettings *s, const Stmt *st)
 int run_setting(Shell *sh, const Stmt *st, char *err, size_t n)
 {
     vrSettings s = *vrWorld_Settings(sh->world);
+    size_t at = st->cmd->offset;
     store_setting(&s, st);
-    return vrWorld_SetSettings(sh->world, &s, err, n);
+    if (vrWorld_SetSettings(sh->world, &s, err, n) != 0) return -1;
+    /* who sets a cap chose it: the first clamp's note is for the defaults */
+    if (at == offsetof(vrSettings, max_linear) || at == offsetof(vrSettings, max_angular)) sh->clamp_noted = 1;
+    return 0;
 }
 
 int run_gravity(Shell *sh, const Stmt *st, char *err, size_t n)

@@ -49,6 +49,7 @@ typedef struct Shell {
     vrTrackers *trackers;        /* `trackers = URL`, NULL: none (track.c) */
     FILE *sound_log;             /* `sound_log = FILE`, NULL: none (sound.c) */
     long errors;                 /* errors so far: the exit status */
+    int clamp_noted;             /* the note on the first speed clamp was given (or a cap was set) */
     Source *src;                 /* the innermost source being read */
 } Shell;
 

@@ -19,11 +19,32 @@ static double now_s(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
+/* The speed caps (max_linear 8 m/s, max_angular 4 rad/s by default, the
+ * thesis's) take energy and spin away silently; the first clamp of a
+ * session that never set a cap says so, once (stats clamps counts them
+ * all). */
+static void note_first_clamp(Shell *sh)
+{
+    vrStats s;
+    const vrSettings *set = vrWorld_Settings(sh->world);
+    char lin[32], ang[32];
+    if (sh->clamp_noted) return;
+    vrWorld_GetStats(sh->world, &s);
+    if (s.clamps == 0) return;
+    sh->clamp_noted = 1;
+    vrFormatDouble(lin, set->max_linear);
+    vrFormatDouble(ang, set->max_angular);
+    sh_note(sh, "a speed cap cut a velocity at frame %ld (max_linear = %s m/s, max_angular = %s rad/s): "
+                "the energy and spin above them are lost; raise them to keep it (stats: clamps)",
+            s.frames, lin, ang);
+}
+
 static int one_frame(Shell *sh, char *err, size_t n)
 {
     sh_trackers_before_frame(sh);
     if (vrWorld_Step(sh->world, 1, err, n) != 0) return -1;
     if (sh_sound_frame(sh, err, n) != 0) return -1;
+    note_first_clamp(sh);
     return sh_display_draw(sh, err, n);
 }
 

@@ -89,7 +89,7 @@ void vrBody_SetMassProperties(vrBody *b, double mass, const mat33 *inertia_unit,
 /* (re)anchors b at time t with the given state; clamps |v| and |omega|
  * (SPEC 3.2: at the start and at every event), recomputes the acceleration
  * (none in a contact step) and the cap time */
-void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vrFlight *f);
+int vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vrFlight *f);
 /* sets the anchor exactly as given (one captured with vrBody_CaptureAnchor):
  * no clamping, no normalising; what derives from it is recomputed */
 void vrBody_Restore(vrBody *b, double t0, vec3 x0, vec3 v0, quat q0, vec3 L, const vrFlight *f);

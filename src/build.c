@@ -24,7 +24,7 @@ int vrObjectDef_ShapeChanged(const vrObjectDef *a, const vrObjectDef *b)
         return a->exp1 != b->exp1 || a->exp2 != b->exp2 || a->a1 != b->a1 || a->a2 != b->a2 || a->a3 != b->a3
             || a->ures != b->ures || a->vres != b->vres;
     default:
-        return strcmp(a->file, b->file) != 0;
+        return strcmp(a->file, b->file) != 0 || memcmp(a->scale, b->scale, sizeof a->scale) != 0;
     }
 }
 
@@ -122,25 +122,30 @@ vec3 vrBody_MomentumAt(const vrBody *b, quat q, vec3 omega)
     return mat33_mulv(&I, omega);
 }
 
-void vrObject_Place(vrObject *o, double t, const vrFlight *f)
+int vrObject_Place(vrObject *o, double t, const vrFlight *f)
 {
     quat q = vrObjectDef_Orientation(&o->def);
+    int clamps;
     o->body.resting = 0;
     o->body.contact = 0;
     o->body.island = -1;
     o->body.hit = 0;
-    vrBody_Anchor(&o->body, t, vrVec3_Of(o->def.translate), vrVec3_Of(o->def.linear_vel), q,
-                  vrBody_MomentumAt(&o->body, q, vrVec3_Of(o->def.angular_vel)), f);
+    clamps = vrBody_Anchor(&o->body, t, vrVec3_Of(o->def.translate), vrVec3_Of(o->def.linear_vel), q,
+                           vrBody_MomentumAt(&o->body, q, vrVec3_Of(o->def.angular_vel)), f);
     o->have_frame_pose = 0;
     if (o->saved) vrSaved_Place(o, f);   /* SPEC 11: a saved run goes on where it was */
+    return clamps;
 }
 
-int vrObject_Ready(vrObject *o, double t, const vrFlight *f, char *err, size_t n)
+int vrObject_Ready(vrObject *o, double t, const vrFlight *f, long long *clamps, char *err, size_t n)
 {
     if (!o->built) {
         if (vrObject_Build(o, err, n) != 0) return -1;
         if (o->live) return 0;
     }
-    if (!o->live) vrObject_Place(o, t, f);
+    if (!o->live) {
+        int k = vrObject_Place(o, t, f);
+        if (clamps) *clamps += k;
+    }
     return 0;
 }

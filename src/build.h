@@ -10,9 +10,12 @@
 /* shape and mass properties from o->def (a polyhedron from o->off) */
 int vrObject_Build(vrObject *o, char *err, size_t n);
 /* the initial state the definition describes, at time t */
-void vrObject_Place(vrObject *o, double t, const vrFlight *f);
-/* built when it is not; placed at t while it is not in the simulation */
-int vrObject_Ready(vrObject *o, double t, const vrFlight *f, char *err, size_t n);
+/* the initial state the definition describes, at time t; returns the
+ * speed clamps it took (stats clamps) */
+int vrObject_Place(vrObject *o, double t, const vrFlight *f);
+/* built when it is not; placed at t while it is not in the simulation
+ * (the clamps of that are added to *clamps when it is not NULL) */
+int vrObject_Ready(vrObject *o, double t, const vrFlight *f, long long *clamps, char *err, size_t n);
 
 /* a definition's mass: the given one, or its volume at unit density */
 double vrObjectDef_Mass(const vrObjectDef *d);

@@ -45,6 +45,7 @@ static int kick(const vrResponding *o, vrUpdate *up, vrBody *b, const vrEvent *e
         vec3 clamped = vec3_scale(w, cap / spin);
         v = vec3_madd(v, -vec3_dot(ev->n, vec3_cross(vec3_sub(clamped, w), ib->p)), ev->n);
         w = clamped;
+        st->clamped = 1;   /* counted where the state is applied (stats clamps) */
     }
     st->v = v;
     st->L = b->rot == VR_ROT_NONE && vec3_len2(w) == 0 ? vec3_zero() : mat33_mulv(&ib->inertia, w);

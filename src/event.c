@@ -32,6 +32,7 @@ void vrBody_Capture(vrBody *b, double t, vrBodyState *st)
     st->hit = b->hit;
     st->contact = b->contact;
     st->island = b->island;
+    st->clamped = 0;
 }
 
 void vrBody_CaptureAnchor(const vrBody *b, vrBodyState *st)
@@ -47,6 +48,7 @@ void vrBody_CaptureAnchor(const vrBody *b, vrBodyState *st)
     st->hit = b->hit;
     st->contact = b->contact;
     st->island = b->island;
+    st->clamped = 0;
 }
 
 vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t)
@@ -67,14 +69,17 @@ int vrUpdate_Bodies(vrUpdate *u, vrBody *x, vrBody *y, double t, vrBodyState **s
     return 0;
 }
 
-void vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f)
+int vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f)
 {
     b->resting = st->resting;
     b->hit = st->hit;
     b->contact = st->contact;
     b->island = st->island;
-    if (st->raw) vrBody_Restore(b, st->t, st->x, st->v, st->q, st->L, f);
-    else vrBody_Anchor(b, st->t, st->x, st->v, st->q, st->L, f);
+    if (st->raw) {
+        vrBody_Restore(b, st->t, st->x, st->v, st->q, st->L, f);
+        return st->clamped;
+    }
+    return st->clamped + vrBody_Anchor(b, st->t, st->x, st->v, st->q, st->L, f);
 }
 
 vrTouch *vrTouches_Add(vrTouches *l)

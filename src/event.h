@@ -43,6 +43,7 @@ typedef struct vrBodyState {
     int raw;
     int resting, hit;
     int contact, island;     /* vrBody's */
+    int clamped;             /* the responder's max_angular cut this state's spin (stats clamps) */
 } vrBodyState;
 
 typedef struct vrUpdate { int n, cap; vrBodyState *body; } vrUpdate;
@@ -78,6 +79,8 @@ int vrUpdate_Bodies(vrUpdate *u, vrBody *x, vrBody *y, double t, vrBodyState **s
 void vrBody_Capture(vrBody *b, double t, vrBodyState *st);
 /* the body's anchor as it is (raw = 1) */
 void vrBody_CaptureAnchor(const vrBody *b, vrBodyState *st);
-void vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f);
+/* the number of speed clamps it took (stats clamps): the responder's, and
+ * the caps' at the anchor */
+int vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f);
 
 #endif

@@ -9,6 +9,7 @@
  * span starts at the event.  At the frame end, rest is decided.
  *
  *   span_grid      the internal steps of a span (SPEC 3.2)
+ *   too_many_steps a frame's work is bounded (SPEC 11)
  *   reach_changed  the grid's reach bounds follow the bodies an event changed
  *   contact_steps, contact_point   the frame's contact steps
  *   run_span       the events of a span
@@ -40,6 +41,22 @@ static void span_grid(const vrWorld *w, double ts, double end, double T, const v
         vrSchedule_GridFor(fastest, ts, end, p->d, w->s.internal_step, g);
     }
     g->frame_T = T;
+}
+
+/* SPEC 11: a frame's work is bounded.  The grid's step is d / (2 v) for
+ * the fastest reach v (thesis 3.2.3), so a frame's internal steps grow as
+ * time_step v / d: a 1e20 kg ball at 1e9 m/s with d = 0.25 needed 8e8 of
+ * them, and the look-ahead's undo log grew with every one.  A grid of more
+ * than `most` steps is refused, naming what to change. */
+static int too_many_steps(const vrWorld *w, const vrGrid *g, double before, double most, char *err, size_t n)
+{
+    double steps = before + (double)g->n, span = g->T - g->t0;
+    if (steps <= most) return 0;
+    return vrGeom_Fail(err, n, "frame %ld would need %.3g internal steps (at most %d): a body may reach %.3g m/s "
+                               "against collision_dist %g m in time_step %g s; lower max_linear, max_angular or "
+                               "time_step, or raise collision_dist",
+                       w->frames + 1, steps, VR_FRAME_STEPS_MAX, span > 0 ? (double)g->n * w->s.collision_dist / (2 * span) : 0,
+                       w->s.collision_dist, w->s.time_step);
 }
 
 /* the bodies an event changed have new reach bounds */
@@ -113,6 +130,9 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
         vrEvent ev;
         int r;
         span_grid(w, f->ts, end, f->T, p, &g);
+        /* twice the frame's bound: speeds an event gives are capped, but
+         * a span's grid rounds up */
+        if (too_many_steps(w, &g, (double)w->subframes, 2.0 * VR_FRAME_STEPS_MAX, err, n) != 0) return -1;
         r = vrOwners_Of(w)->first_event(w, &g, f->instant < VR_INSTANT_MAX, &ev, err, n);
         if (r != 1) {
             if (r == 0) w->subframes += g.n;
@@ -139,6 +159,15 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
     }
 }
 
+/* the whole frame's grid from its start, before anything moves: a frame
+ * too long is refused with the world unchanged */
+static int frame_bounded(const vrWorld *w, const Frame *f, const vrParams *p, char *err, size_t n)
+{
+    vrGrid g;
+    span_grid(w, f->ts, f->T, f->T, p, &g);
+    return too_many_steps(w, &g, 0, VR_FRAME_STEPS_MAX, err, n);
+}
+
 /* Runs [t, t + time_step]: ARCHITECTURE "the loop, once", a contact step
  * at a time (SPEC 7): the island step at its start, then its events. */
 static int run_frame(vrWorld *w, char *err, size_t n)
@@ -153,6 +182,7 @@ static int run_frame(vrWorld *w, char *err, size_t n)
     w->subframes = 0;
     vrSounds_Frame(&w->sounds);
     vrReach_Frame(&w->reach, w->dyn, w->ndyn, f.ts, f.T, &p.flight);
+    if (frame_bounded(w, &f, &p, err, n) != 0) return -1;
     for (k = 0; k < steps; k++) {
         double at = contact_point(w->t, f.T, k, steps), end = contact_point(w->t, f.T, k + 1, steps);
         int r = f.T > w->t && moving_bodies(w) ? vrIsland_Step(w, at, end - at, err, n) : 0;

@@ -332,10 +332,11 @@ static void note_stillness(vrBody *b)
     b->still = b->rot == VR_ROT_NONE && plus_zero(m->v0) && plus_zero(m->a) && no_minus_zero(m->x0);
 }
 
-void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vrFlight *f)
+int vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vrFlight *f)
 {
     vrMotion *m = &b->m;
     double s;
+    int clamps = 0;
     m->t0 = t;
     m->x0 = x;
     m->q0 = quat_normalize(q);
@@ -344,13 +345,13 @@ void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vr
         L = vec3_zero();
     }
     s = vec3_len(v);
-    if (s > f->max_linear) v = vec3_scale(v, f->max_linear / s);
+    if (s > f->max_linear) v = vec3_scale(v, f->max_linear / s), clamps++;
     m->v0 = v;
     m->L = L;
     if (!b->is_static && vec3_len2(L) > 0) {
         mat33 R = mat33_from_quat(m->q0);
         double w = vec3_len(omega_at(b, &R));
-        if (w > f->max_angular) m->L = vec3_scale(L, f->max_angular / w);
+        if (w > f->max_angular) m->L = vec3_scale(L, f->max_angular / w), clamps++;
     }
     m->a = flight_accel(b, f->accel);
     m->tcap = cap_time(m->v0, m->a, f->max_linear);
@@ -358,6 +359,7 @@ void vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vr
     reset_rotation_cache(b);
     note_stillness(b);
     b->pose_valid = 0;
+    return clamps;
 }
 
 void vrBody_Restore(vrBody *b, double t0, vec3 x0, vec3 v0, quat q0, vec3 L, const vrFlight *f)

@@ -1,15 +1,22 @@
 /* off.c — a convex polyhedron from an OFF file (SPEC 1.1, `polyhedron`).
  *
- * The format (Geomview's OFF): a header line `OFF`, the counts `nv nf [ne]`
- * (on the header line or the next), nv lines `x y z`, nf lines
- * `k i1 .. ik` (a colour may follow the indices: ignored).  `#` starts a
- * comment; blank lines are skipped.
+ * The format (Geomview's OFF): a header line `OFF` or `COFF`, the counts
+ * `nv nf [ne]` (on the header line or the next), nv lines `x y z` (COFF:
+ * `x y z r g b [a]`, the colour ignored), nf lines `k i1 .. ik` (a colour
+ * may follow the indices: ignored).  `#` starts a comment; blank lines are
+ * skipped.
  *
- * The polyhedron is the convex hull of the vertices, and the file must
- * describe that hull: every vertex on the hull's surface and every face in
- * the plane of a hull face, within OFF_TOL of the size.  The tolerance is
- * looser than the hull's own because OFF files are often written with six or
- * seven significant digits; the hull merges its facets at the same one.
+ * The polyhedron is the convex hull of the vertices (quickhull, hull.c),
+ * whatever the faces say: a non-convex model collides as its hull, as the
+ * man page says.  The faces are still read and checked, so that a broken
+ * file is named, not half taken.  The vertices are scaled first (the
+ * `scale` attribute); the scaled vertices can be written back as OFF text
+ * (off_text) that gives the same polyhedron bit for bit with scale 1: that
+ * is what the workers receive.
+ *
+ *   read_header, read_vertices, read_faces, read_off   the file
+ *   scale_vertices   the scale, and the sane-coordinates limit
+ *   off_text         the scaled vertices as OFF text
  */
 #include <errno.h>
 #include <stdlib.h>
@@ -20,7 +27,10 @@
 #include "grow.h"
 #include "hull.h"
 #include "off.h"
+#include "vroc.h"
 
+/* facets within this (relative) merge: OFF files are often written with
+ * six or seven significant digits */
 #define OFF_TOL 1e-6
 #define OFF_MAX_COUNT 100000000 /* keeps every size an int */
 
@@ -38,6 +48,7 @@ typedef struct Reader {
  * claiming 10^8 vertices in three lines costs three lines of memory. */
 typedef struct Off {
     int nv, nf;
+    int coloured;        /* COFF: a colour after each vertex */
     vec3 *v;
     int *vline;          /* the line each vertex is on */
     int *fstart, *fline; /* faces: CSR over fvert, and their lines */
@@ -136,9 +147,10 @@ static int read_header(Reader *r, Off *o, char *err, size_t errlen)
 {
     int first = 1, ne;
     char msg[160];
-    if (need_line(r, "empty file, expected the header 'OFF'", err, errlen) != 0) return -1;
-    if (strcmp(r->tok[0], "OFF") != 0) {
-        snprintf(msg, sizeof msg, "expected the header 'OFF', got '%.40s'", r->tok[0]);
+    if (need_line(r, "empty file, expected the header 'OFF' or 'COFF'", err, errlen) != 0) return -1;
+    o->coloured = strcmp(r->tok[0], "COFF") == 0;
+    if (strcmp(r->tok[0], "OFF") != 0 && !o->coloured) {
+        snprintf(msg, sizeof msg, "expected the header 'OFF' or 'COFF', got '%.40s'", r->tok[0]);
         return fail_at(r, err, errlen, msg);
     }
     if (r->ntok == 1) {
@@ -153,11 +165,7 @@ static int read_header(Reader *r, Off *o, char *err, size_t errlen)
         snprintf(msg, sizeof msg, "a polyhedron needs at least 4 vertices, the file has %d", o->nv);
         return fail_at(r, err, errlen, msg);
     }
-    if (o->nf < 4) {
-        snprintf(msg, sizeof msg, "a closed polyhedron needs at least 4 faces, the file has %d", o->nf);
-        return fail_at(r, err, errlen, msg);
-    }
-    return 0;
+    return 0;   /* the faces are not needed: the hull of the vertices is used */
 }
 
 /* reads the next line that `what` (item `index` of `count`) must be on */
@@ -168,6 +176,12 @@ static int expect_line(Reader *r, const char *what, int index, int count, char *
     return need_line(r, msg, err, errlen);
 }
 
+/* OFF: x y z; COFF: x y z and an RGB or RGBA colour */
+static int vertex_words_ok(const Off *o, int ntok)
+{
+    return o->coloured ? ntok == 6 || ntok == 7 : ntok == 3;
+}
+
 static int read_vertices(Reader *r, Off *o, char *err, size_t errlen)
 {
     char msg[160];
@@ -176,8 +190,9 @@ static int read_vertices(Reader *r, Off *o, char *err, size_t errlen)
         double x[3];
         if (expect_line(r, "vertex", i, o->nv, err, errlen) != 0) return -1;
         if (room_vertex(o, i) != 0) return vrGeom_Fail(err, errlen, "out of memory");
-        if (r->ntok != 3) {
-            snprintf(msg, sizeof msg, "vertex %d: expected 3 coordinates, got %d words", i, r->ntok);
+        if (!vertex_words_ok(o, r->ntok)) {
+            snprintf(msg, sizeof msg, "vertex %d: expected 3 coordinates%s, got %d words", i,
+                     o->coloured ? " and a colour (r g b or r g b a)" : "", r->ntok);
             return fail_at(r, err, errlen, msg);
         }
         for (k = 0; k < 3; k++)
@@ -236,7 +251,7 @@ static int read_faces(Reader *r, Off *o, char *err, size_t errlen)
         if (rc == 0) rc = read_face(r, o, f, seen, err, errlen);
         if (rc == 0) o->fline[f] = r->line;
     }
-    if (rc == 0) o->fstart[o->nf] = o->nfvert;
+    if (rc == 0 && o->nf > 0) o->fstart[o->nf] = o->nfvert;   /* no faces: no array */
     if (rc == 0) {
         int more = next_line(r);
         if (more < 0) rc = vrGeom_Fail(err, errlen, "out of memory");
@@ -267,101 +282,67 @@ static int read_off(const char *path, Off *o, char *err, size_t errlen)
     return rc;
 }
 
-/* ---- convexity ------------------------------------------------------------ */
+/* ---- the hull of the scaled vertices ---------------------------------------- */
 
-/* every vertex that is not a hull vertex must lie on the hull's surface */
-static int check_vertices(const Off *o, const vrPolyhedron *p, const int *hullv, double tol, const char *path,
-                          char *err, size_t errlen)
+/* the vertices times the scale; a coordinate past VR_LENGTH_MAX is refused
+ * at its line, as every other length is */
+static int scale_vertices(Off *o, const double scale[3], const char *path, char *err, size_t errlen)
 {
-    int i, f;
+    int i;
     for (i = 0; i < o->nv; i++) {
-        vec3 x = vec3_sub(o->v[i], p->shift);
-        double depth = -INFINITY;
-        if (hullv[i] >= 0) continue;
-        for (f = 0; f < p->nf; f++)
-            if (vrPolyhedron_FaceHeight(p, f, x) > depth) depth = vrPolyhedron_FaceHeight(p, f, x);
-        if (depth < -tol)
-            return vrGeom_Fail(err, errlen, "%s:%d: not convex (vertex %d lies %.3g inside the hull)", path,
-                               o->vline[i], i, -depth);
+        vec3 x = vec3_make(o->v[i].x * scale[0], o->v[i].y * scale[1], o->v[i].z * scale[2]);
+        if (vec3_maxabs(x) > VR_LENGTH_MAX)
+            return vrGeom_Fail(err, errlen, "%s:%d: vertex %d is %.3g m from the origin%s (at most %g m)", path,
+                               o->vline[i], i, vec3_maxabs(x), scale[0] == 1 && scale[1] == 1 && scale[2] == 1 ? "" : " once scaled",
+                               VR_LENGTH_MAX);
+        o->v[i] = x;
     }
     return 0;
 }
 
-/* the largest distance of OFF face g's vertices from the plane of hull face f */
-static double face_gap(const Off *o, const vrPolyhedron *p, int g, int f)
+/* "OFF nv 0 0" and the vertices, each coordinate as %.17g: read back, the
+ * same doubles, so the same hull */
+static char *off_text(const Off *o)
 {
-    double gap = 0;
-    int k;
-    for (k = o->fstart[g]; k < o->fstart[g + 1]; k++) {
-        double d = fabs(vrPolyhedron_FaceHeight(p, f, vec3_sub(o->v[o->fvert[k]], p->shift)));
-        if (d > gap) gap = d;
-    }
-    return gap;
+    size_t cap = 32 + (size_t)o->nv * 3 * 26, len;
+    char *t = malloc(cap);
+    int i;
+    if (!t) return NULL;
+    len = (size_t)snprintf(t, cap, "OFF\n%d 0 0\n", o->nv);
+    for (i = 0; i < o->nv; i++)
+        len += (size_t)snprintf(t + len, cap - len, "%.17g %.17g %.17g\n", o->v[i].x, o->v[i].y, o->v[i].z);
+    return t;
 }
 
-/* the hull face whose plane OFF face g lies nearest: among the faces at one
- * of its hull vertices when it has one, else among all */
-static double best_gap(const Off *o, const vrPolyhedron *p, const int *hullv, int g)
-{
-    int k, hv = -1, f, e, side;
-    double best = INFINITY;
-    for (k = o->fstart[g]; k < o->fstart[g + 1] && hv < 0; k++) hv = hullv[o->fvert[k]];
-    if (hv < 0) {
-        for (f = 0; f < p->nf; f++) best = fmin(best, face_gap(o, p, g, f));
-        return best;
-    }
-    for (e = p->vert_edge_start[hv]; e < p->vert_edge_start[hv + 1]; e++)
-        for (side = 0; side < 2; side++) best = fmin(best, face_gap(o, p, g, p->edge_f[p->vert_edge[e]][side]));
-    return best;
-}
-
-static int check_faces(const Off *o, const vrPolyhedron *p, const int *hullv, double tol, const char *path,
-                       char *err, size_t errlen)
-{
-    int g;
-    for (g = 0; g < o->nf; g++) {
-        double gap = best_gap(o, p, hullv, g);
-        if (gap > tol)
-            return vrGeom_Fail(err, errlen, "%s:%d: not convex (face %d is not on the hull: "
-                               "it is %.3g off the nearest hull face's plane)", path, o->fline[g], g, gap);
-    }
-    return 0;
-}
-
-/* the hull of the vertices, and the check that the file describes it */
 static int hull_of(const Off *o, const char *path, vrPolyhedron **out, char *err, size_t errlen)
 {
     char msg[200];
-    int *src = NULL, *hullv = malloc(sizeof *hullv * o->nv), i, rc;
-    double tol = OFF_TOL * vrGeom_Size(o->v, o->nv);
-    if (!hullv) return vrGeom_Fail(err, errlen, "out of memory");
-    rc = vrPolyhedron_HullTol(o->v, o->nv, OFF_TOL, &src, out, msg, sizeof msg);
-    if (rc != 0) {
-        free(hullv);
-        return vrGeom_Fail(err, errlen, "%s: %s", path, msg);
-    }
-    for (i = 0; i < o->nv; i++) hullv[i] = -1;
-    /* NOLINTNEXTLINE(clang-analyzer-unix.Malloc): a hull has 4 vertices or more (HullTol refuses fewer), so src is not empty */
-    for (i = 0; i < (*out)->nv; i++) hullv[src[i]] = i;
-    rc = check_vertices(o, *out, hullv, tol, path, err, errlen);
-    if (rc == 0) rc = check_faces(o, *out, hullv, tol, path, err, errlen);
-    if (rc != 0) {
+    if (vrPolyhedron_HullTol(o->v, o->nv, OFF_TOL, NULL, out, msg, sizeof msg) == 0) return 0;
+    return vrGeom_Fail(err, errlen, "%s: %s", path, msg);
+}
+
+int vrPolyhedron_FromOFFScaled(const char *path, const double scale[3], vrPolyhedron **out, char **text, char *err,
+                               size_t errlen)
+{
+    Off o = {0};
+    int rc;
+    *out = NULL;
+    if (text) *text = NULL;
+    if (!path) return vrGeom_Fail(err, errlen, "no OFF file given");
+    rc = read_off(path, &o, err, errlen);
+    if (rc == 0) rc = scale_vertices(&o, scale, path, err, errlen);
+    if (rc == 0) rc = hull_of(&o, path, out, err, errlen);
+    if (rc == 0 && text && !(*text = off_text(&o))) {
         vrPolyhedron_Free(*out);
         *out = NULL;
+        rc = vrGeom_Fail(err, errlen, "out of memory");
     }
-    free(src);
-    free(hullv);
+    off_free(&o);
     return rc;
 }
 
 int vrPolyhedron_FromOFF(const char *path, vrPolyhedron **out, char *err, size_t errlen)
 {
-    Off o = {0};
-    int rc;
-    *out = NULL;
-    if (!path) return vrGeom_Fail(err, errlen, "no OFF file given");
-    rc = read_off(path, &o, err, errlen);
-    if (rc == 0) rc = hull_of(&o, path, out, err, errlen);
-    off_free(&o);
-    return rc;
+    static const double unit[3] = {1, 1, 1};
+    return vrPolyhedron_FromOFFScaled(path, unit, out, NULL, err, errlen);
 }

@@ -90,6 +90,7 @@ int vrWorld_WriteStats(const vrWorld *w, FILE *out)
         put_list(out, "gp_pairs", s.gp_pairs, s.gps);
         fprintf(out, " foreign=%lld malformed=%lld", s.foreign, s.malformed);
     }
+    fprintf(out, " clamps=%lld", s.clamps);   /* last: keys are only ever added at the end */
     fputc('\n', out);
     return ferror(out) ? -1 : 0;
 }

@@ -97,7 +97,7 @@ int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up)
     for (i = 0; i < up->n; i++) {
         vrBodyState *st;
         vrObject *o = w->table.obj[up->body[i].id];
-        vrBody_Apply(&o->body, &up->body[i], &f);
+        w->clamps += vrBody_Apply(&o->body, &up->body[i], &f);
         st = vrUpdate_Body(&w->pending, &o->body, up->body[i].t);
         if (!st) return -1;
         *st = up->body[i];

@@ -14,7 +14,7 @@
 static int ready(vrWorld *w, vrObject *o)
 {
     vrFlight f = vrSettings_Flight(&w->s);
-    return vrObject_Ready(o, w->t, &f, NULL, 0);
+    return vrObject_Ready(o, w->t, &f, NULL, NULL, 0);
 }
 
 int vrWorld_AllAtRest(const vrWorld *w)
@@ -109,6 +109,7 @@ void vrWorld_GetStats(const vrWorld *cw, vrStats *st)
     st->collisions = w->collisions;
     st->island_steps = w->island_steps;
     st->island_contacts = w->island_contacts;
+    st->clamps = w->clamps;
     st->frame_ms = w->frame_ms;
     st->sim_ms = w->sim_ms;
     st->render_ms = w->render_ms;

@@ -105,8 +105,10 @@ static int ready_all(vrWorld *w, char *err, size_t n)
 {
     vrFlight f = vrSettings_Flight(&w->s);
     int i;
+    char why[512];
     for (i = 0; i < w->table.n; i++)
-        if (w->table.obj[i] && vrObject_Ready(w->table.obj[i], w->t, &f, err, n) != 0) return -1;
+        if (w->table.obj[i] && vrObject_Ready(w->table.obj[i], w->t, &f, &w->clamps, why, sizeof why) != 0)
+            return vrGeom_Fail(err, n, "object '%s': %s", w->table.obj[i]->name, why);   /* which one failed */
     return 0;
 }
 

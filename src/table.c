@@ -4,7 +4,6 @@
  *   valid_name         [A-Za-z_][A-Za-z0-9_.-]*, at most VR_NAME_MAX bytes
  *   room_for_one_more  grows the table so that id t->n is free
  *   off_from_text      a polyhedron from OFF text (a worker gets the text)
- *   read_text          a whole file's text
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -160,41 +159,15 @@ unsigned char *vrTable_PendingMarks(const vrTable *t, const vrUpdate *pending)
     return mark;
 }
 
-static char *read_text(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    char *buf = NULL;
-    size_t len = 0, cap = 0, got;
-    if (!f) return NULL;
-    do {
-        if (len + 4096 + 1 > cap) {
-            char *nb = realloc(buf, cap = 2 * cap + 4096 + 1);
-            if (!nb) break;
-            buf = nb;
-        }
-        got = fread(buf + len, 1, cap - len - 1, f);
-        len += got;
-    } while (got > 0);
-    fclose(f);
-    if (buf) buf[len] = 0;
-    return buf;
-}
-
 int vrObject_SetDef(vrObject *o, const vrObjectDef *def, vrObjectDef *old, char *err, size_t n)
 {
     if (def->type != o->def.type) return vrGeom_Fail(err, n, "an object's type cannot change");
     if (vrObjectDef_Check(def, err, n) != 0) return -1;
-    if (def->type == VR_POLYHEDRON && strcmp(def->file, o->def.file) != 0) {
+    if (def->type == VR_POLYHEDRON && def->file[0]
+        && (strcmp(def->file, o->def.file) != 0 || memcmp(def->scale, o->def.scale, sizeof def->scale) != 0)) {
         vrPolyhedron *p = NULL;
-        char *text = read_text(def->file);
-        if (vrPolyhedron_FromOFF(def->file, &p, err, n) != 0) {
-            free(text);
-            return -1;
-        }
-        if (!text) {
-            vrPolyhedron_Free(p);
-            return vrGeom_Fail(err, n, "out of memory");
-        }
+        char *text;   /* the scaled vertices: what the workers build from */
+        if (vrPolyhedron_FromOFFScaled(def->file, def->scale, &p, &text, err, n) != 0) return -1;
         vrPolyhedron_Free(o->off);
         free(o->off_text);
         o->off = p;

@@ -61,7 +61,7 @@ void vrWorld_Restart(vrWorld *w)
     w->t = w->t_base = 0;
     w->frames = w->frames_base = 0;
     w->subframes = 0;
-    w->collisions = w->island_steps = w->island_contacts = 0;
+    w->collisions = w->island_steps = w->island_contacts = w->clamps = 0;
     w->frame_ms = w->sim_ms = w->render_ms = 0;
     memset(&w->retired, 0, sizeof w->retired);
     w->random_next = 0;

@@ -65,6 +65,7 @@ struct vrWorld {
     long long collisions;
     long long island_steps;  /* island steps that solved an island */
     long long island_contacts; /* contacts those steps solved */
+    long long clamps;        /* velocities the speed caps cut (stats clamps) */
     double frame_ms, sim_ms, render_ms;
     vrSounds sounds;         /* this frame's collision sounds (sound.c, SPEC 8) */
     vrTrack track[2];        /* the head and the hand, by vrDevice (tracker.c, SPEC 8) */

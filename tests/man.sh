@@ -3,7 +3,8 @@
 # attribute that `help` lists (the parser's own table) has a tagged
 # paragraph in man/vroc.1 with the same syntax, and `help NAME` describes
 # it; every command the manual tags is one vroc knows; groff renders the
-# page without warnings.  Ends with `N passed, M failed`.
+# page without warnings; help fits 80 columns; vroc-gp.1 is there.
+# Ends with `N passed, M failed`.
 set -u
 top=$(pwd)
 case ${VROC_BUILD:?set VROC_BUILD to the build folder} in
@@ -55,6 +56,20 @@ while IFS= read -r syn; do
     if [ "$first" = "$syn" ]; then pass
     else fail "man: 'help $name' does not describe '$syn' (got '$first')"; fi
 done <"$tmp/syntax"
+
+# help fits a terminal of 80 columns, the listing and each `help NAME`
+wide=$(awk 'length > 80' "$tmp/help" | head -n 3)
+[ -z "$wide" ] && pass || fail "man: help has lines wider than 80 columns: $wide"
+while IFS= read -r syn; do echo "help ${syn%% *}"; done <"$tmp/syntax" | "$vroc" >"$tmp/helps" 2>&1
+wide=$(awk 'length > 80' "$tmp/helps" | head -n 3)
+[ -z "$wide" ] && pass || fail "man: help NAME has lines wider than 80 columns: $wide"
+
+# SEE ALSO names vroc-gp(1): its page is here, renders without warnings,
+# and make install installs it
+gp=$top/man/vroc-gp.1
+if [ -f "$gp" ] && groff -man -Tutf8 -ww "$gp" >/dev/null 2>"$tmp/gpwarn" && [ ! -s "$tmp/gpwarn" ]; then pass
+else fail "man: man/vroc-gp.1, named in SEE ALSO, is missing or groff warns about it"; fi
+grep -q 'man/vroc-gp\.1' "$top/Makefile" && pass || fail "man: make install does not install man/vroc-gp.1"
 
 # the other way: every command the manual tags (a bold word at the start of
 # a .TP/.TQ tag in COMMANDS) is one the parser knows

@@ -2,7 +2,8 @@
 # The thesis scenes give the same dump after 200 frames serially and with
 # 1, 2, 3 and 8 workers, both distributions, in process (memq://), and with
 # 2 and 3 forked worker processes over UDP multicast (SPEC 5: trajectories
-# equal the serial run's, bit for bit).  Runs itself in a private network
+# equal the serial run's, bit for bit); and a scene of scaled OFF hulls
+# and speed clamps, dump and stats.  Runs itself in a private network
 # namespace; fails (never skips) when it cannot make one.
 # Run by tests/run.sh from the repo root with VROC_BUILD set.
 set -u
@@ -43,6 +44,52 @@ for scene in simple desks basketball office bounce; do
             failed=$((failed + 1))
         fi
     done
+done
+# Issue 29: scaled OFF hulls (the workers get the scaled vertices as text)
+# and speed clamps (the responder's spin clamp travels with the state) give
+# the same dump and the same stats clamps= with workers as serially
+clamp_scene() { # clamp_scene GPS [URL]
+    printf 'gps = %s\n' "$1"
+    [ -z "${2:-}" ] || printf 'lcm_url = %s\n' "$2"
+    cat <<EOF2
+gravity
+cube floor
+  size = (10, 10, 0.5)
+  translate = (0, 0, -0.5)
+  mass = -1
+polyhedron mushroom
+  file = $PWD/tests/shell/shapes/mushroom.off
+  scale = (1, 2, 1.5)
+  translate = (-4, 0, 2)
+  angular_vel = (3, 0, 1)
+polyhedron tall
+  file = $PWD/tests/shell/shapes/tetra.coff
+  scale = 2
+  translate = (4, 0, 1)
+cube a
+  translate = (0, -3, 1.5)
+  linear_vel = (0, 8, 0)
+cube b
+  translate = (0.8, 0, 1.5)
+step 40
+dump
+stats
+EOF2
+}
+clamp_scene 0 | "$vroc" -q 2>"$tmp/c.err" | sed -E 's/ [a-z_]+_ms=[0-9.]+//g; s/ (gps|messages|copies|gp_[a-z]+|foreign|malformed)=[^ ]*//g; s/ (checks|heap_pops|klu_[a-z]+)=[0-9]+//g' >"$tmp/c.serial"
+grep -q 'clamps=[1-9]' "$tmp/c.serial" && passed=$((passed + 1)) ||
+    { echo "FAIL clamps: the scene cut no velocity (stats clamps=0): it proves nothing"; failed=$((failed + 1)); }
+for cfg in "2 memq://" "2" "3"; do
+    set -- $cfg
+    clamp_scene "$1" "${2:-}" | "$vroc" -q 2>"$tmp/c.err" |
+        sed -E 's/ [a-z_]+_ms=[0-9.]+//g; s/ (gps|messages|copies|gp_[a-z]+|foreign|malformed)=[^ ]*//g; s/ (checks|heap_pops|klu_[a-z]+)=[0-9]+//g' >"$tmp/c.par"
+    if [ -s "$tmp/c.serial" ] && cmp -s "$tmp/c.serial" "$tmp/c.par" && [ ! -s "$tmp/c.err" ]; then
+        passed=$((passed + 1))
+    else
+        echo "FAIL scaled hulls and clamps: $1 workers${2:+ ($2)} differ from the serial run"
+        diff "$tmp/c.serial" "$tmp/c.par" | head -5; head -3 "$tmp/c.err"
+        failed=$((failed + 1))
+    fi
 done
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]

@@ -218,7 +218,7 @@ if [ ! -x "$libdump" ]; then
     fail "libdump: cannot build tests/shell/libdump.c against $build/libvroc.a"
     sed 's/^/    /' "$tmp/cc.err" | head -n 10
 else
-    (cd "$work" && timeout 120 "$vroc" <"$gold/libdump.in" >"$tmp/shell.dump" 2>"$tmp/shell.err")
+    (cd "$work" && timeout 120 "$vroc" -q <"$gold/libdump.in" >"$tmp/shell.dump" 2>"$tmp/shell.err")
     st=$?
     timeout 120 "$libdump" >"$tmp/lib.dump" 2>"$tmp/lib.err"
     if [ $st != 0 ] || [ -s "$tmp/shell.err" ]; then

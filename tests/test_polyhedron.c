@@ -624,7 +624,7 @@ static int test_off_refuses_missing_files_directories_and_malformed_text(void)
     ENSURE(off_fails("/nonexistent/x.off", NULL, "cannot open") == 0);
     ENSURE(off_fails(tmpdir, NULL, "is a directory") == 0);
     ENSURE(off_fails("empty.off", "# nothing\n\n", ":2: empty file") == 0);
-    ENSURE(off_fails("hdr.off", "COFF\n4 4 6\n" TETRA_VERTS TETRA_FACES, ":1: expected the header 'OFF'") == 0);
+    ENSURE(off_fails("hdr.off", "PLY\n4 4 6\n" TETRA_VERTS TETRA_FACES, ":1: expected the header 'OFF' or 'COFF'") == 0);
     ENSURE(off_fails("counts.off", "OFF\n4 four 6\n" TETRA_VERTS TETRA_FACES, ":2: expected the counts") == 0);
     ENSURE(off_fails("few.off", "OFF 3 1 3\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ":1: a polyhedron needs at least 4 vertices") == 0);
     ENSURE(off_fails("num.off", "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1x 0\n0 0 1\n" TETRA_FACES, ":5: vertex 2: bad coordinate '1x'") == 0);
@@ -645,19 +645,35 @@ static int test_off_refuses_missing_files_directories_and_malformed_text(void)
     return 0;
 }
 
-static int test_off_refuses_a_vertex_inside_the_hull(void)
+/* The man page: a polyhedron is the convex hull of its file's vertices.
+ * A cube with its top pushed in (vertex 8 at the centre) collides as the
+ * unit cube: volume 1, centre (0.5, 0.5, 0.5), inertia m/6 about each axis
+ * through the centre (a cube of side 1: m (1 + 1) / 12). */
+static int test_off_of_a_dented_cube_is_its_convex_hull_the_cube(void)
 {
-    ENSURE(off_fails("tests/data/dented_cube.off", NULL, ":13: not convex (vertex 8 lies 0.5 inside the hull)") == 0);
+    vrPolyhedron *p;
+    ENSURE_MSG(vrPolyhedron_FromOFF("tests/data/dented_cube.off", &p, err, sizeof err) == 0, "%s", err);
+    ENSURE(p->nv == 8 && p->ne == 12 && p->nf == 6 && count_faces_of_size(p, 4) == 6);
+    ENSURE_NEAR(p->volume, 1, 1e-14);
+    ENSURE_NEAR(p->shift.x, 0.5, 1e-14);
+    ENSURE_NEAR(p->shift.y, 0.5, 1e-14);
+    ENSURE_NEAR(p->shift.z, 0.5, 1e-14);
+    ENSURE_NEAR(p->inertia_unit.m[0][0], 1.0 / 6, 1e-14);
+    ENSURE_NEAR(p->inertia_unit.m[2][2], 1.0 / 6, 1e-14);
+    ENSURE(check_polyhedron(p, 1e-15) == 0);
+    vrPolyhedron_Free(p);
     return 0;
 }
 
 /* A triangular prism whose top is turned 30 degrees: each side is two
  * triangles, and only one of the two diagonals is an edge of the hull.
- * The file with the other one folds inward at all its vertices on the hull. */
-static int test_off_refuses_faces_that_fold_inside_the_hull(void)
+ * Either file gives the hull: 6 vertices, 2 triangles and 3 side faces of
+ * two triangles each (a twisted side is not planar: 8 faces). */
+static int test_off_faces_that_fold_inside_give_the_hull_all_the_same(void)
 {
     char text[1024];
-    int len, i, ok = 0, diag;
+    int len, i, diag;
+    double vol[2];
     for (diag = 0; diag < 2; diag++) {
         vrPolyhedron *p;
         const char *path;
@@ -674,16 +690,70 @@ static int test_off_refuses_faces_that_fold_inside_the_hull(void)
         }
         path = write_file("prism.off", text);
         ENSURE(path != NULL);
-        if (vrPolyhedron_FromOFF(path, &p, err, sizeof err) == 0) {
-            ok++;
-            ENSURE(p->nv == 6 && p->nf == 8 && check_polyhedron(p, 1e-12) == 0);
-            vrPolyhedron_Free(p);
-        } else {
-            ENSURE_MSG(strstr(err, "not convex (face ") != NULL, "%s", err);
-            ENSURE(strstr(err, "is not on the hull") != NULL);
-        }
+        ENSURE_MSG(vrPolyhedron_FromOFF(path, &p, err, sizeof err) == 0, "%s", err);
+        ENSURE(p->nv == 6 && p->nf == 8 && check_polyhedron(p, 1e-12) == 0);
+        vol[diag] = p->volume;
+        vrPolyhedron_Free(p);
     }
-    ENSURE_MSG(ok == 1, "%d of the two splittings accepted", ok);
+    ENSURE(vol[0] == vol[1]);
+    return 0;
+}
+
+/* COFF is OFF with a colour after each vertex (RGB or RGBA), ignored */
+static int test_coff_gives_the_same_tetrahedron_as_off(void)
+{
+    vrPolyhedron *a, *b;
+    const char *path = write_file("tetra.off", "OFF\n4 4 6\n" TETRA_VERTS TETRA_FACES);
+    ENSURE(path != NULL);
+    ENSURE_MSG(vrPolyhedron_FromOFF(path, &a, err, sizeof err) == 0, "%s", err);
+    path = write_file("tetra.coff", "COFF\n4 4 6\n0 0 0 1 0 0\n1 0 0 0 1 0 1\n0 1 0 0 0 1\n0 0 1 0.5 0.5 0.5 1\n"
+                                    "3 0 2 1 255 0 0\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+    ENSURE(path != NULL);
+    ENSURE_MSG(vrPolyhedron_FromOFF(path, &b, err, sizeof err) == 0, "%s", err);
+    ENSURE(a->nv == 4 && b->nv == 4 && a->nf == 4 && b->nf == 4);
+    ENSURE(a->volume == b->volume && a->shift.x == b->shift.x);
+    ENSURE_NEAR(a->volume, 1.0 / 6, 1e-15);
+    vrPolyhedron_Free(a);
+    vrPolyhedron_Free(b);
+    ENSURE(off_fails("short.coff", "COFF\n4 4 6\n0 0 0 1 0\n1 0 0\n0 1 0\n0 0 1\n" TETRA_FACES,
+                     ":3: vertex 0: expected 3 coordinates and a colour") == 0);
+    return 0;
+}
+
+/* scale (sx,sy,sz) stretches the 2 x 4 x 6 box to 2 sx x 4 sy x 6 sz: the
+ * volume 48 sx sy sz, the centre (10 sx, -5 sy, 2 sz); the text the workers
+ * get gives the same polyhedron bit for bit with scale 1 */
+static int test_off_scale_stretches_each_axis_and_its_text_rebuilds_it(void)
+{
+    static const double scale[3] = {0.5, 2, 3};
+    vrPolyhedron *p, *q;
+    char *text = NULL;
+    const char *path;
+    int i;
+    ENSURE_MSG(vrPolyhedron_FromOFFScaled("tests/data/cube.off", scale, &p, &text, err, sizeof err) == 0, "%s", err);
+    ENSURE(p->nv == 8 && p->nf == 6 && text != NULL);
+    ENSURE_NEAR(p->volume, 48 * 0.5 * 2 * 3, 1e-11);
+    ENSURE_NEAR(p->shift.x, 5, 1e-14);
+    ENSURE_NEAR(p->shift.y, -10, 1e-14);
+    ENSURE_NEAR(p->shift.z, 6, 1e-14);
+    path = write_file("scaled.off", text);
+    ENSURE(path != NULL);
+    ENSURE_MSG(vrPolyhedron_FromOFF(path, &q, err, sizeof err) == 0, "%s", err);
+    ENSURE(q->nv == p->nv && q->volume == p->volume);
+    for (i = 0; i < p->nv; i++) ENSURE(p->vert[i].x == q->vert[i].x && p->vert[i].y == q->vert[i].y && p->vert[i].z == q->vert[i].z);
+    free(text);
+    vrPolyhedron_Free(p);
+    vrPolyhedron_Free(q);
+    return 0;
+}
+
+/* SPEC 11: a vertex past 1e6 m once scaled is refused at its line */
+static int test_off_refuses_vertices_scaled_past_the_length_limit(void)
+{
+    static const double scale[3] = {1e6, 1, 1};
+    vrPolyhedron *p = NULL;
+    ENSURE(vrPolyhedron_FromOFFScaled("tests/data/cube.off", scale, &p, NULL, err, sizeof err) == -1 && !p);
+    ENSURE_MSG(strstr(err, "cube.off:4: vertex 0 is 9e+06 m from the origin once scaled") != NULL, "%s", err);
     return 0;
 }
 
@@ -691,7 +761,8 @@ static void remove_tmpdir(void)
 {
     static const char *names[] = {"split.off", "empty.off", "hdr.off", "counts.off", "few.off", "num.off", "nan.off",
                                   "inf.off", "huge.off", "two.off", "index.off", "neg.off", "short.off", "twice.off",
-                                  "trunc.off", "truncv.off", "bogus.off", "extra.off", "flat.off", "prism.off"};
+                                  "trunc.off", "truncv.off", "bogus.off", "extra.off", "flat.off", "prism.off",
+                                  "tetra.off", "tetra.coff", "short.coff", "scaled.off"};
     char path[128];
     size_t i;
     for (i = 0; i < sizeof names / sizeof *names; i++) {
@@ -730,8 +801,11 @@ static const vrTest tests[] = {
     TEST(test_off_reads_a_box_with_comments_colours_and_counts_on_the_header),
     TEST(test_off_accepts_subdivided_faces_and_either_orientation),
     TEST(test_off_refuses_missing_files_directories_and_malformed_text),
-    TEST(test_off_refuses_a_vertex_inside_the_hull),
-    TEST(test_off_refuses_faces_that_fold_inside_the_hull),
+    TEST(test_off_of_a_dented_cube_is_its_convex_hull_the_cube),
+    TEST(test_off_faces_that_fold_inside_give_the_hull_all_the_same),
+    TEST(test_coff_gives_the_same_tetrahedron_as_off),
+    TEST(test_off_scale_stretches_each_axis_and_its_text_rebuilds_it),
+    TEST(test_off_refuses_vertices_scaled_past_the_length_limit),
     TEST(test_hull_timing_of_superquadrics_up_to_1000x1000),
 };
 

@@ -2,7 +2,8 @@
 # tests/tty.sh — vroc at a terminal: drives it on a pseudo-terminal with
 # tests/shell/ptydrive.c (built here with cc) and checks the banner and
 # prompt, TAB completion, the history file, that errors keep the session,
-# Ctrl-C, -i, and that `start` runs frames in real time while the prompt
+# Ctrl-C (on a line, a long step and a running start), Ctrl-D (one prompt),
+# exit, -i, and that `start` runs frames in real time while the prompt
 # answers and `stop` halts them.  Every wait has a timeout; a setup that
 # cannot run is a failure, not a skip.  Ends with `N passed, M failed`.
 set -u
@@ -154,6 +155,35 @@ session "$tmp/s2" "$tmp/t2"
 st=$?
 [ $st = 0 ] && pass || { fail "tty: Ctrl-D after a clean session gave status $st, expected 0"; show_tail "$tmp/t2"; }
 grep -q 'step 1000000000' "$tmp/t2" && pass || fail "tty: up-arrow (Ctrl-P) did not recall the previous session's history"
+
+# Ctrl-D shows no second prompt: after the dump's line, one prompt (the one
+# Ctrl-D answered), then the end
+n=$(tr -d '\r' <"$tmp/t2" | awk '/^again,0,/ { f = 1; next } f' | grep -o 'vroc> ' | wc -l)
+[ "$n" = 1 ] && pass || { fail "tty: after Ctrl-D the prompt came $n times, expected once"; show_tail "$tmp/t2"; }
+
+# ---- session 5: Ctrl-C stops a running start; exit leaves ----------------------------
+{
+    cat <<'EOF2'
+expect vroc> 
+send time_step = 0.05\n
+send sphere s\n
+send linear_vel = (1, 0, 0)\n
+send start\n
+expect vroc> 
+sleep 0.5
+send \x03
+expect start stopped by Ctrl-C
+expect vroc> 
+EOF2
+    probe; echo 'sleep 0.5'; probe                          # stopped: the frames do not grow
+    printf '%s\n' 'send exit\n'
+} >"$tmp/s5"
+session "$tmp/s5" "$tmp/t5"
+st=$?
+[ $st = 0 ] && pass || { fail "tty: Ctrl-C on a running start, then exit: status $st, expected 0"; show_tail "$tmp/t5"; }
+set -- $(frames_of "$tmp/t5")
+if [ $# = 2 ] && [ "$1" -gt 0 ] && [ "$1" = "$2" ]; then pass
+else fail "tty: frames after Ctrl-C on start: '$*' (expected two equal counts > 0)"; show_tail "$tmp/t5"; fi
 
 # ---- session 3: -i reads the files, then the prompt ------------------------------------
 printf 'sphere fromfile\n  radius = 0.5\n' >"$tmp/first.cmd"

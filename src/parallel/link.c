@@ -35,8 +35,9 @@ int vrLink_Open(vrLink *l, const char *url, char *err, size_t n)
     l->rng = (unsigned long long)getpid() * 0x9e3779b97f4a7c15ULL + 1;
     l->sent = l->dropped = 0;
     if (!l->lcm) {
-        snprintf(err, n, "cannot open LCM at '%s' (udpm needs a multicast route, e.g. "
-                         "ip route add 224.0.0.0/4 dev lo)", url);
+        snprintf(err, n, "cannot open LCM at '%s' (udpm needs a multicast route: as root, "
+                         "ip route add 224.0.0.0/4 dev lo; or lcm_url = memq:// runs the workers "
+                         "in this process)", url);
         return -1;
     }
     return 0;

@@ -40,6 +40,7 @@ static int recover(vrWorld *w, char *err, size_t n)
     w->collisions = s->snap_collisions;
     w->island_steps = s->snap_island_steps;
     w->island_contacts = s->snap_island_contacts;
+    w->clamps = s->snap_clamps;
     for (i = 0; i < s->n; i++) {   /* the frame is redone: what it counted is counted again */
         s->gp[i].before = s->snap_counts[i];
         memset(&s->gp[i].now, 0, sizeof s->gp[i].now);
@@ -60,6 +61,7 @@ static void snapshot(vrWorld *w, vrSgp *s)
     s->snap_collisions = w->collisions;
     s->snap_island_steps = w->island_steps;
     s->snap_island_contacts = w->island_contacts;
+    s->snap_clamps = w->clamps;
     for (i = 0; i < s->n; i++) s->snap_counts[i] = vrSgp_Counts(s, i);
 }
 

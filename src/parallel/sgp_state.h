@@ -55,7 +55,7 @@ struct vrSgp {
     int frame_open;
     int frame_fresh;            /* the frame opened with an island step: its frame_start not sent yet */
     vrUpdate snap, snap_pending;   /* the frame start, to redo the frame */
-    long long snap_collisions, snap_island_steps, snap_island_contacts;
+    long long snap_collisions, snap_island_steps, snap_island_contacts, snap_clamps;
     vrGpCounts snap_counts[VR_MAX_GPS];  /* each worker's counts then (before + now) */
     long long requests, received, foreign, malformed;
     double idle_ms;             /* of the current exchange: waits in which no message came */

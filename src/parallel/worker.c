@@ -173,7 +173,7 @@ static int set_up(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
         if (vrTable_Put(&k->objects, m->defs[i].id, &d, m->defs[i].off, err, n) != 0) return -1;
     }
     for (i = 0; i < k->objects.n; i++)   /* placed: their states follow */
-        if (k->objects.obj[i] && vrObject_Ready(k->objects.obj[i], m->t, &k->params.flight, err, n) != 0) return -1;
+        if (k->objects.obj[i] && vrObject_Ready(k->objects.obj[i], m->t, &k->params.flight, NULL, err, n) != 0) return -1;
     k->owner = vrOwner_Create();
     if (!k->owner) return snprintf(err, n, "out of memory"), -1;
     vrOwner_SetParams(k->owner, &k->params);
