@@ -90,6 +90,6 @@ int vrWorld_WriteStats(const vrWorld *w, FILE *out)
         put_list(out, "gp_pairs", s.gp_pairs, s.gps);
         fprintf(out, " foreign=%lld malformed=%lld", s.foreign, s.malformed);
     }
-    fputc('\n', out);
+    fprintf(out, " live_pairs=%lld\n", s.live_pairs);
     return ferror(out) ? -1 : 0;
 }
