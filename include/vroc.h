@@ -179,6 +179,7 @@ typedef struct vrStats {
     long long gp_copies[64];      /* objects per worker (thesis table 5.5) */
     long long gp_pairs[64];       /* pairs per worker */
     long long foreign, malformed; /* messages ignored: other runs', undecodable */
+    long long live_pairs;         /* pairs with a record now: those whose bodies' boxes meet (SPEC 10) */
 } vrStats;
 void vrWorld_GetStats(const vrWorld *w, vrStats *st);
 /* the renderer reports its time here so that `stats` can show render_ms */

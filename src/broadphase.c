@@ -146,6 +146,16 @@ static void sort_sweep(vrBroadphase *bp)
     }
 }
 
+static const vrBroadphase *sorting;   /* qsort has no context argument in C99 */
+static int cmp_sweep(const void *x, const void *y)
+{
+    int a = *(const int *)x, b = *(const int *)y;
+    return sweep_before(sorting, a, b) ? -1 : sweep_before(sorting, b, a) ? 1 : 0;
+}
+
+/* the list made anew (bodies came or went) is sorted at once: by
+ * insertion, 10,000 bodies in id order would take 25 M moves; the order
+ * is the same (sweep_before is a total order) */
 static int remake_sweep(vrBroadphase *bp, vrBody *const *body, int nbody)
 {
     int i;
@@ -154,6 +164,9 @@ static int remake_sweep(vrBroadphase *bp, vrBody *const *body, int nbody)
     for (i = 0; i < nbody; i++)
         if (body[i]) bp->sweep[bp->nsweep++] = i;
     bp->stale = 0;
+    for (i = 0; i < bp->nsweep; i++) vrBroad_Box(bp, body, bp->sweep[i]);
+    sorting = bp;
+    qsort(bp->sweep, (size_t)bp->nsweep, sizeof *bp->sweep, cmp_sweep);
     return 0;
 }
 
@@ -243,6 +256,65 @@ int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0
     return 0;
 }
 
+/* ---- boxes at one instant (vrBroad_MeetAt) ----------------------------------- */
+
+typedef struct vrAtBox { vrBox box; int id; } vrAtBox;
+
+static int at_before(const void *x, const void *y)
+{
+    const vrAtBox *a = x, *b = y;
+    return a->box.lo.x < b->box.lo.x ? -1 : a->box.lo.x > b->box.lo.x ? 1 : a->id - b->id;
+}
+
+/* where body b is at t, padded as make_box pads (statics are valid for good) */
+static void box_at(const vrBroadphase *bp, vrBody *b, double t, vrBox *x)
+{
+    double size, pad = 0.0;
+    if (b->is_static) {
+        static_extent(b, &x->lo, &x->hi);
+    } else {
+        vrBody_Position(b, t, &x->lo);
+        x->hi = x->lo;
+        pad = b->r_out;
+    }
+    size = fmax(vec3_maxabs(x->lo), vec3_maxabs(x->hi));
+    pad += 0.5 * bp->d + 1e-9 + 1e-12 * size;
+    x->lo = vec3_sub(x->lo, vec3_make(pad, pad, pad));
+    x->hi = vec3_add(x->hi, vec3_make(pad, pad, pad));
+    x->valid = 1;
+    x->frame = b->is_static ? VR_BOX_FOR_GOOD : -1;
+}
+
+static void sweep_at(const vrAtBox *e, int n, const unsigned char *want, void (*meet)(void *ctx, int x, int y),
+                     void *ctx)
+{
+    int i, j;
+    for (i = 0; i < n; i++)
+        for (j = i + 1; j < n && e[j].box.lo.x <= e[i].box.hi.x; j++) {
+            int x = e[i].id, y = e[j].id;
+            if (e[i].box.frame == VR_BOX_FOR_GOOD && e[j].box.frame == VR_BOX_FOR_GOOD) continue;
+            if (want && !want[x] && !want[y]) continue;
+            if (!vrBox_Disjoint(&e[i].box, &e[j].box)) meet(ctx, x < y ? x : y, x < y ? y : x);
+        }
+}
+
+int vrBroad_MeetAt(const vrBroadphase *bp, vrBody *const *body, int nbody, double t, const unsigned char *want,
+                   void (*meet)(void *ctx, int x, int y), void *ctx)
+{
+    vrAtBox *e = malloc((size_t)(nbody > 0 ? nbody : 1) * sizeof *e);
+    int i, n = 0;
+    if (!e) return -1;
+    for (i = 0; i < nbody; i++)
+        if (body[i]) {
+            box_at(bp, body[i], t, &e[n].box);
+            e[n++].id = i;
+        }
+    qsort(e, (size_t)n, sizeof *e, at_before);
+    sweep_at(e, n, want, meet, ctx);
+    free(e);
+    return 0;
+}
+
 /* ---- the pair map ------------------------------------------------------------ */
 
 static unsigned map_slot(const vrPairMap *m, long long key)
@@ -267,6 +339,26 @@ void vrPairMap_Put(vrPairMap *m, long long key, int val)
     if (m->key[i] == -1) m->n++;
     m->key[i] = key;
     m->val[i] = val;
+}
+
+/* linear probing's deletion: the entries after the hole that hash at or
+ * before it move back into it, so that no search stops short */
+void vrPairMap_Remove(vrPairMap *m, long long key)
+{
+    unsigned mask = (unsigned)(m->cap - 1), i, j;
+    if (!m->cap) return;
+    for (i = map_slot(m, key); m->key[i] != key; i = (i + 1) & mask)
+        if (m->key[i] == -1) return;
+    for (j = (i + 1) & mask; m->key[j] != -1; j = (j + 1) & mask) {
+        unsigned home = map_slot(m, m->key[j]);
+        /* j's entry may fill the hole at i unless its home lies in (i, j] */
+        if (i <= j ? (i < home && home <= j) : (i < home || home <= j)) continue;
+        m->key[i] = m->key[j];
+        m->val[i] = m->val[j];
+        i = j;
+    }
+    m->key[i] = -1;
+    m->n--;
 }
 
 void vrPairMap_Free(vrPairMap *m)

@@ -96,10 +96,21 @@ int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0
 int vrBroad_Meeting(const vrBroadphase *bp, int id, void (*meet)(void *ctx, int y), void *ctx);
 static inline int vrBroad_CanMeet(const vrBroadphase *bp) { return bp->near_frame == bp->frame; }
 
+/* The pairs that could be within d at the one instant t (a new owner's
+ * pairs, new bodies'): boxes of the bodies where they are at t (a moving
+ * body's bounding sphere, a static body's surface box), padded by d/2,
+ * sorted and swept as at a frame start.  Calls meet(ctx, x, y), x < y, for
+ * every two held bodies, not both static, whose boxes overlap and of which
+ * one is marked in want (want NULL: every body).  -1 on no memory, nothing
+ * called then.  The frame's boxes and lists are not touched. */
+int vrBroad_MeetAt(const vrBroadphase *bp, vrBody *const *body, int nbody, double t, const unsigned char *want,
+                   void (*meet)(void *ctx, int x, int y), void *ctx);
+
 /* an empty map for at least n pairs (-1 and no map when out of memory) */
 int vrPairMap_Reset(vrPairMap *m, int n);
 void vrPairMap_Put(vrPairMap *m, long long key, int val);
 int vrPairMap_Find(const vrPairMap *m, long long key);   /* -1: none */
+void vrPairMap_Remove(vrPairMap *m, long long key);
 void vrPairMap_Free(vrPairMap *m);
 
 #endif

@@ -53,14 +53,19 @@ static void wake_pairs_of(vrOwner *o, int id)
     for (i = 0; i < o->body_pairs[id].n; i++) wake(o, o->body_pairs[id].v[i]);
 }
 
+/* (a lazy owner makes the record of a pair met for the first time, flagged
+ * as a woken one: pair_life.c) */
 static void wake_met(void *ctx, int x, int y)
 {
-    vrOwner *o = ctx;
-    int pi = vrPairMap_Find(&o->bp.map, vrPair_Order(x, y));
-    if (pi >= 0) wake(o, pi);
+    int pi = vrPair_Meet(ctx, x, y);
+    if (pi >= 0) wake(ctx, pi);
 }
 
-static void wake_boxless(void *ctx, int id) { wake_pairs_of(ctx, id); }
+static void wake_boxless(void *ctx, int id)
+{
+    vrOwner_MeetAll(ctx, id);
+    wake_pairs_of(ctx, id);
+}
 
 /* A new frame: new boxes, and the dormant pairs whose boxes now overlap are
  * woken, to be evaluated at its start (the broadphase sweeps the boxes, so
@@ -69,13 +74,19 @@ static void wake_boxless(void *ctx, int id) { wake_pairs_of(ctx, id); }
  * `hit` is per frame (rest.c): a worker's copies must forget it as the
  * shell's bodies do, or an update that is no impulse (a push-out, a
  * support change) carries an old hit back to the shell. */
-void vrOwner_NewFrame(vrOwner *o, const vrGrid *g)
+int vrOwner_NewFrame(vrOwner *o, const vrGrid *g)
 {
     int i;
     for (i = 0; i < o->bodycap; i++)
         if (o->body[i]) o->body[i]->hit = 0;
-    if (!o->bp.map.cap || vrBroad_NewFrame(&o->bp, o->body, o->bodycap, g->t0, g->frame_T, wake_met, wake_boxless, o) != 0)
+    if (o->lazy && !o->bp.map.cap && vrPairMap_Reset(&o->bp.map, 16) != 0) return -1;
+    if (!o->bp.map.cap || vrBroad_NewFrame(&o->bp, o->body, o->bodycap, g->t0, g->frame_T, wake_met, wake_boxless, o) != 0) {
+        if (o->lazy) return -1;             /* no records for the pairs that meet */
         for (i = 0; i < o->npair; i++) wake(o, i);
+        return 0;
+    }
+    vrOwner_DropApart(o);
+    return 0;
 }
 
 /* body id changed: each key of its pairs was for the old motion, so a
@@ -91,12 +102,15 @@ static void changed_pair(vrOwner *o, int pi, const vrBox *box, int id, int other
     }
 }
 
-/* every pair of id, one by one */
+/* every pair of id, one by one; a lazy owner makes those without a record
+ * that could be within d now at its next look at the poses (the frame
+ * start that follows, where bodies come and go, meets the others) */
 static void changed_all(vrOwner *o, int id, const vrBox *box)
 {
     const vrIntList *l = &o->body_pairs[id], *partner = &o->body_partners[id];
     int j;
     for (j = 0; j < l->n; j++) changed_pair(o, l->v[j], box, id, partner->v[j]);
+    if (o->lazy) o->fresh[id] = 1, o->any_fresh = 1;
 }
 
 typedef struct vrChanged { vrOwner *o; int id; const vrBox *box; } vrChanged;
@@ -108,6 +122,7 @@ static void changed_meets(void *ctx, int y)
     vrChanged *c = ctx;
     vrOwner *o = c->o;
     int x = c->id, pi = vrPairMap_Find(&o->bp.map, vrPair_Order(x, y));
+    if (pi < 0 && o->lazy && !vrBroad_Apart(c->box, vrBroad_Box(&o->bp, o->body, y))) pi = vrPair_Meet(o, x, y);
     if (pi >= 0 && (o->hot[pi] & HOT_DORMANT)) changed_pair(o, pi, c->box, x, y);
 }
 

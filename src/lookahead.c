@@ -218,7 +218,8 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     long k = 1;
     int i;
     o->nfound = 0;
-    if (!(g->frame_T == o->bp.T)) vrOwner_NewFrame(o, g);
+    if (vrOwner_MakeFresh(o, g->t0) != 0) return -1;
+    if (!(g->frame_T == o->bp.T) && vrOwner_NewFrame(o, g) != 0) return -1;
     o->bp.t0 = g->t0;
     o->span_end = g->T;
     o->closed_t = allow_instant ? NAN : g->t0;

@@ -90,7 +90,7 @@ int vrWorld_WriteStats(const vrWorld *w, FILE *out)
         put_list(out, "gp_pairs", s.gp_pairs, s.gps);
         fprintf(out, " foreign=%lld malformed=%lld", s.foreign, s.malformed);
     }
-    fprintf(out, " clamps=%lld", s.clamps);   /* last: keys are only ever added at the end */
-    fputc('\n', out);
+    fprintf(out, " clamps=%lld", s.clamps);
+    fprintf(out, " live_pairs=%lld\n", s.live_pairs);   /* keys are only ever added at the end */
     return ferror(out) ? -1 : 0;
 }

@@ -64,6 +64,8 @@ void vrOwner_Free(vrOwner *o)
     free(o->body_partners);
     free(o->body_awake);
     free(o->was_frozen);
+    free(o->fresh);
+    free(o->free_pairs.v);
     free(o->hot);
     vrBroad_Free(&o->bp);
     free(o->body);
@@ -146,9 +148,14 @@ void vrOwner_SetParams(vrOwner *o, const vrParams *p)
     o->v_rest = sqrt(2.0 * vec3_len(p->flight.accel) * o->gc);
     vrBroad_SetEnvelope(&o->bp, p->d);    /* the boxes are padded by d: made anew */
     for (i = 0; i < o->npair; i++) {
+        if (vrPair_Free(&o->pair[i])) continue;
         vrPair_Place(o, i);
         vrPair_Flag(o, i);
     }
+    /* lazy: the pairs the new envelope brings close are made at the next
+     * look at the poses, flagged as these are */
+    for (i = 0; o->lazy && i < o->bodycap; i++)
+        if (o->body[i]) o->fresh[i] = 1, o->any_fresh = 1;
 }
 
 int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
@@ -165,7 +172,10 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
         if (vrBroad_Reserve(&o->bp, cap) != 0) return -1;
         cap = old;
         if (vrGrow((void **)&o->was_frozen, &cap, id + 1, sizeof *o->was_frozen) != 0) return -1;
+        cap = old;
+        if (vrGrow((void **)&o->fresh, &cap, id + 1, sizeof *o->fresh) != 0) return -1;
         for (i = old; i < cap; i++) {
+            o->fresh[i] = 0;
             o->was_frozen[i] = 2;
             o->body[i] = NULL;
             o->body_pairs[i].n = o->body_pairs[i].cap = 0;
@@ -198,11 +208,52 @@ double vrPair_Key(const vrOwner *o, const vrPair *p, double t, double dist, vec3
  * pair is evaluated at the last grid point of a frame (or, with the heap,
  * provably outside there), so inside = distance <= d at that time.  A
  * flagged pair is instead evaluated afresh at the next span start. */
+/* a slot for a new pair: a dropped pair's (pair_life.c), or a new one */
+static int new_slot(vrOwner *o)
+{
+    if (o->free_pairs.n > 0) return o->free_pairs.v[--o->free_pairs.n];
+    if (vrGrow((void **)&o->pair, &o->paircap, o->npair + 1, sizeof *o->pair) != 0
+        || vrGrow((void **)&o->hot, &o->hotcap, o->npair + 1, sizeof *o->hot) != 0) return -1;
+    return o->npair++;
+}
+
+/* the map by order, at most half full */
+static int map_pair(vrOwner *o, int pi)
+{
+    if (2 * (o->bp.map.n + 1) + 2 > o->bp.map.cap) {
+        int i;
+        if (vrPairMap_Reset(&o->bp.map, 2 * (o->bp.map.n + 1)) != 0) return -1;
+        for (i = 0; i < o->npair; i++)
+            if (i != pi && !vrPair_Free(&o->pair[i])) vrPairMap_Put(&o->bp.map, o->pair[i].order, i);
+    }
+    vrPairMap_Put(&o->bp.map, o->pair[pi].order, pi);
+    return 0;
+}
+
+static void settle_at(vrOwner *o, int pi, double t)
+{
+    vrPair *p = &o->pair[pi];
+    vrPose pa, pb;
+    vrContact c;
+    int inside;
+    vrPair_Query(o, p, t, 0, &pa, &pb, &c);
+    inside = c.dist <= o->p.d;
+    p->t_check = t;
+    p->near = vrPair_Near(o, c.dist);
+    p->overlap = c.dist < -VR_PENETRATION_TOL;
+    vrPair_Settle(o, pi, inside, inside ? t : vrPair_Key(o, p, t, c.dist, c.n));
+}
+
+/* A pair's state at a frame boundary is a pure function of the poses: every
+ * pair is evaluated at the last grid point of a frame (or, with the heap,
+ * provably outside there), so inside = distance <= d at that time.  A
+ * flagged pair is instead evaluated afresh at the next span start. */
 int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
 {
     vrPair *p;
-    if (vrGrow((void **)&o->pair, &o->paircap, o->npair + 1, sizeof *o->pair) != 0) return -1;
-    p = &o->pair[o->npair];
+    int pi = new_slot(o);
+    if (pi < 0) return -1;
+    p = &o->pair[pi];
     memset(p, 0, sizeof *p);
     p->a = a;
     p->b = b;
@@ -212,38 +263,20 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
     p->quiet_until = -INFINITY;
     p->touch_t = -INFINITY;
     p->active = -1;
-    if (vrGrow((void **)&o->hot, &o->hotcap, o->npair + 1, sizeof *o->hot) != 0) return -1;
-    o->hot[o->npair] = 0;
-    if (2 * (o->bp.map.n + 1) + 2 > o->bp.map.cap) {
-        int i;
-        if (vrPairMap_Reset(&o->bp.map, 2 * (o->npair + 1)) != 0) return -1;
-        for (i = 0; i < o->npair; i++) vrPairMap_Put(&o->bp.map, o->pair[i].order, i);
-    }
-    vrPairMap_Put(&o->bp.map, p->order, o->npair);
-    if (vrIntList_Push(&o->body_pairs[a], o->npair) != 0 || vrIntList_Push(&o->body_pairs[b], o->npair) != 0
+    o->hot[pi] = 0;
+    if (map_pair(o, pi) != 0) return -1;
+    if (vrIntList_Push(&o->body_pairs[a], pi) != 0 || vrIntList_Push(&o->body_pairs[b], pi) != 0
         || vrIntList_Push(&o->body_partners[a], b) != 0 || vrIntList_Push(&o->body_partners[b], a) != 0) return -1;
-    o->npair++;
-    vrPair_ListAwake(o, o->npair - 1);
-    vrPair_UpdateSchedule(o, o->npair - 1);
-    if (flagged) {
-        vrPair_Flag(o, o->npair - 1);
-    } else if (p->scheduled) {
-        vrPose pa, pb;
-        vrContact c;
-        int inside;
-        vrPair_Query(o, p, t, 0, &pa, &pb, &c);
-        inside = c.dist <= o->p.d;
-        p->t_check = t;
-        o->pair[o->npair - 1].near = vrPair_Near(o, c.dist);
-        o->pair[o->npair - 1].overlap = c.dist < -VR_PENETRATION_TOL;
-        vrPair_Settle(o, o->npair - 1, inside, inside ? t : vrPair_Key(o, &o->pair[o->npair - 1], t, c.dist, c.n));
-    }
+    vrPair_ListAwake(o, pi);
+    vrPair_UpdateSchedule(o, pi);
+    if (flagged) vrPair_Flag(o, pi);
+    else if (p->scheduled) settle_at(o, pi, t);
     return 0;
 }
 
 int vrOwner_AddPair(vrOwner *o, int a, int b) { return vrOwner_AddPairAt(o, a, b, 0, 1); }
 
-long vrOwner_PairCount(const vrOwner *o) { return o->npair; }
+long vrOwner_PairCount(const vrOwner *o) { return o->npair - o->free_pairs.n; }
 
 /* rebuilds pair indices after pairs were removed */
 static void reindex(vrOwner *o)
@@ -285,8 +318,10 @@ void vrOwner_DropBody(vrOwner *o, int id)
     int i, k = 0;
     if (id >= o->bodycap || !o->body[id]) return;
     for (i = 0; i < o->npair; i++)
-        if (o->pair[i].a != id && o->pair[i].b != id) o->pair[k++] = o->pair[i];
+        if (!vrPair_Free(&o->pair[i]) && o->pair[i].a != id && o->pair[i].b != id) o->pair[k++] = o->pair[i];
     o->npair = k;
+    o->free_pairs.n = 0;
+    if (o->fresh) o->fresh[id] = 0;
     o->body[id] = NULL;
     o->nheld--;
     vrBroad_BodyChanged(&o->bp, id);
@@ -328,7 +363,7 @@ int vrOwner_Overlapping(vrOwner *o, double t, double tol, const int *ids, int ni
 {
     unsigned char *mine = calloc((size_t)o->bodycap + 1, 1);
     int i, n = 0;
-    if (!mine) return -1;
+    if (!mine || vrOwner_MakeFresh(o, t) != 0) return free(mine), -1;
     for (i = 0; i < nids; i++)
         if (ids[i] >= 0 && ids[i] < o->bodycap) mine[ids[i]] = 1;
     sort_pairs(o, &o->flagged);

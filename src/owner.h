@@ -64,7 +64,21 @@ int vrOwner_AddPair(vrOwner *o, int a, int b);
 /* a pair joining at a frame boundary t: settled from the poses at t (inside
  * when within d), or flagged for evaluation at the next span start */
 int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged);
+/* the pairs with a record (lazy: those whose bodies' boxes meet) */
 long vrOwner_PairCount(const vrOwner *o);
+/* SPEC 10: lazy = 1 makes the owner hold a pair of every two of its
+ * bodies, not both static, without vrOwner_AddPair: a pair's record is made
+ * when the bodies' boxes meet and dropped when they are apart and the pair
+ * has nothing in hand, so memory grows with n and the close pairs.  Set it
+ * before the first body. */
+void vrOwner_SetLazy(vrOwner *o, int lazy);
+/* lazy: the pairs of the held bodies, as of the poses at t, settled from
+ * them (as vrOwner_AddPairAt) or flagged when a body is marked in pending
+ * (by id; NULL: none).  -1 on no memory. */
+int vrOwner_MakePairsAt(vrOwner *o, double t, const unsigned char *pending);
+/* lazy: body id joins with its pairs, to be evaluated at the next span
+ * start (as vrOwner_AddPair) */
+int vrOwner_AddBody(vrOwner *o, int id, vrBody *b);
 /* these bodies were re-anchored: their pairs are re-evaluated at the next
  * span start, and any pending event of theirs is dropped */
 void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n);

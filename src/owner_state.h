@@ -101,6 +101,13 @@ struct vrOwner {
     vrRegionMemo memo[REGION_MEMO];
     long long checks, heap_pops;
     int awake_lost;           /* no memory to list a pair awake: events look at every pair */
+    /* lazy pairs (pair_life.c): with lazy = 1 the owner holds a pair of any
+     * two of its bodies (not both static), but keeps its record only while
+     * their boxes meet; a slot of o->pair with a = -1 is free */
+    int lazy;
+    vrIntList free_pairs;     /* free slots, to be used again */
+    unsigned char *fresh;     /* by body id: its pairs are still to be made (at the next look at the poses) */
+    int any_fresh;
     void (*progress)(void *ctx);
     void *progress_ctx;
 };
@@ -127,10 +134,17 @@ void vrPair_UpdateSchedule(vrOwner *o, int pi);      /* unscheduled when both bo
 double vrPair_Key(const vrOwner *o, const vrPair *p, double t, double dist, vec3 n);
 void vrPair_Settle(vrOwner *o, int pi, int inside, double key);   /* after an evaluation */
 
+/* pair_life.c */
+int vrPair_Meet(vrOwner *o, int x, int y);          /* the pair of x and y (made when lazy), -1: none */
+int vrOwner_MakeFresh(vrOwner *o, double t);        /* the pairs of fresh bodies, from the poses at t */
+int vrOwner_MeetAll(vrOwner *o, int id);            /* lazy: every pair of id made (it meets everything) */
+void vrOwner_DropApart(vrOwner *o);                 /* lazy: records of pairs apart and quiet go */
+static inline int vrPair_Free(const vrPair *p) { return p->a < 0; }
+
 /* dormancy.c */
 int vrPair_Apart(vrOwner *o, int pi);               /* cannot meet before the frame ends */
 void vrPair_MakeDormant(vrOwner *o, int pi);
-void vrOwner_NewFrame(vrOwner *o, const vrGrid *g);
+int vrOwner_NewFrame(vrOwner *o, const vrGrid *g);   /* -1: no memory */
 
 /* pair_query.c: region = 0, the distance only; 1, the contact region too */
 void vrPair_Query(vrOwner *o, vrPair *p, double t, int region, vrPose *pa, vrPose *pb, vrContact *c);

@@ -6,7 +6,7 @@
  * same vrOwnerSet, so the frame loop is one loop.
  *
  *   retire_owner       the serial owner goes; its counts stay in the stats
- *   make_serial_owner  one owner of every pair, settled from the poses at t
+ *   make_serial_owner  one owner of every pair, settled from the poses at t (lazy records, SPEC 10)
  *   deliver            the serial owner hears of the states changed since
  *   serial_*           the serial owner set's operations
  */
@@ -37,19 +37,16 @@ static int make_serial_owner(vrWorld *w)
 {
     vrParams p = vrSettings_Params(&w->s);
     unsigned char *pending;
-    int i, j, rc = 0;
+    int i, rc;
     w->owner = vrOwner_Create();
     if (!w->owner) return -1;
+    vrOwner_SetLazy(w->owner, 1);
     vrOwner_SetParams(w->owner, &p);
     for (i = 0; i < w->table.n; i++)
         if (w->table.obj[i] && w->table.obj[i]->live && vrOwner_HoldBody(w->owner, i, &w->table.obj[i]->body) != 0)
             return -1;
     if (!(pending = vrTable_PendingMarks(&w->table, &w->pending))) return -1;
-    for (i = 0; i < w->table.n && rc == 0; i++)
-        for (j = i + 1; j < w->table.n && rc == 0; j++) {
-            if (!vrTable_LivePair(&w->table, i, j)) continue;
-            rc = vrOwner_AddPairAt(w->owner, i, j, w->t, pending[i] || pending[j]);
-        }
+    rc = vrOwner_MakePairsAt(w->owner, w->t, pending);   /* the others as their boxes meet (SPEC 10) */
     free(pending);
     return rc;
 }
@@ -58,14 +55,7 @@ static int make_serial_owner(vrWorld *w)
  * static–static pairs are never made), to be evaluated at the next span */
 int vrOwners_AddObject(vrWorld *w, int id)
 {
-    int j;
-    if (!w->owner) return 0;
-    if (vrOwner_HoldBody(w->owner, id, &w->table.obj[id]->body) != 0) return -1;
-    for (j = 0; j < w->table.n; j++) {
-        if (j == id || !vrTable_LivePair(&w->table, id, j)) continue;
-        if (vrOwner_AddPair(w->owner, j < id ? j : id, j < id ? id : j) != 0) return -1;
-    }
-    return 0;
+    return w->owner ? vrOwner_AddBody(w->owner, id, &w->table.obj[id]->body) : 0;
 }
 
 int vrOwners_Choose(vrWorld *w, char *err, size_t n)

@@ -216,7 +216,9 @@ static int touch_of(vrOwner *o, vrPair *p, double t, double h, vrTouches *out)
  * look, in the flagged list, is looked at here too) */
 int vrOwner_Touching(vrOwner *o, double t, double h, vrTouches *out)
 {
-    int i, n = o->p.use_heap ? o->active.n + o->flagged.n : o->npair;
+    int i, n;
+    if (vrOwner_MakeFresh(o, t) != 0) return -1;
+    n = o->p.use_heap ? o->active.n + o->flagged.n : o->npair;
     if (h > 0) o->gather_t = t, o->gather_h = h;
     for (i = 0; i < n; i++) {
         int pi = !o->p.use_heap ? i : i < o->active.n ? o->active.v[i] : o->flagged.v[i - o->active.n];

@@ -4,9 +4,10 @@
  * builds the scene through the public calls, as a user would.
  *
  *   make_room      six static walls around the interior
- *   free_spot      is a bounding sphere clear of the objects placed so far?
+ *   place, free_spot   the objects placed so far in a grid; is a bounding sphere clear of them?
  *   add_one        the next sphere or cube: position, rotation, velocities
  */
+#include <stdlib.h>
 #include <string.h>
 #include "world_state.h"
 
@@ -71,22 +72,108 @@ static int make_room(vrWorld *w, double s, char *err, size_t n)
         || add_box(w, "wall5", vec3_make(big, t, big), vec3_make(0, o, h), err, n) ? -1 : 0;
 }
 
-/* is a bounding sphere at c of radius r at least gap away from every object
- * placed so far (room walls: from their inner faces)? */
-static int free_spot(vrWorld *w, vec3 c, double r, double gap)
+/* The objects placed so far, by their bounding spheres at the world's time
+ * (the walls aside: the draw keeps clear of them), in a hashed grid of
+ * cells no smaller than any distance free_spot asks about, so that a draw
+ * looks at the few objects in the 27 cells about it, not at all of them
+ * (10,000 objects); objects wider than SMALL_R are looked at always.  The
+ * answers are the same as a look at every object. */
+#define SMALL_R 1.0
+typedef struct vrPlaced {
+    vec3 *c;
+    double *r;
+    int *next, n, cap;
+    int *head, mask;          /* bucket heads, by hashed cell */
+    int *big, nbig;           /* the wide ones */
+    double cell;
+} vrPlaced;
+
+static unsigned cell_hash(long long x, long long y, long long z)
 {
-    int i;
-    vrObjectState st;
-    for (i = 0; i < w->table.n; i++) {
-        vrObject *o = w->table.obj[i];
-        if (!o || is_wall(o->name) || vrWorld_GetObjectState(w, i, &st) != 0) continue;
-        if (vec3_dist(c, vec3_make(st.position[0], st.position[1], st.position[2])) < r + o->body.r_out + gap)
-            return 0;
+    unsigned long long h = (unsigned long long)x * 73856093ull ^ (unsigned long long)y * 19349663ull
+                         ^ (unsigned long long)z * 83492791ull;
+    return (unsigned)(h ^ (h >> 29));
+}
+
+static long long cell_of(const vrPlaced *p, double x) { return (long long)floor(x / p->cell); }
+
+static void place(vrPlaced *p, vec3 c, double r)
+{
+    int i = p->n++;
+    p->c[i] = c;
+    p->r[i] = r;
+    if (r > SMALL_R) {
+        p->big[p->nbig++] = i;
+        return;
     }
+    {
+        unsigned b = cell_hash(cell_of(p, c.x), cell_of(p, c.y), cell_of(p, c.z)) & (unsigned)p->mask;
+        p->next[i] = p->head[b];
+        p->head[b] = i;
+    }
+}
+
+/* object id, built, in the grid (a wall or one without a state: not) */
+static void place_object(vrWorld *w, vrPlaced *p, int id)
+{
+    vrObject *o = w->table.obj[id];
+    vrObjectState st;
+    if (!o || is_wall(o->name) || vrWorld_GetObjectState(w, id, &st) != 0) return;
+    place(p, vec3_make(st.position[0], st.position[1], st.position[2]), o->body.r_out);
+}
+
+static void placed_free(vrPlaced *p)
+{
+    free(p->c);
+    free(p->r);
+    free(p->next);
+    free(p->head);
+    free(p->big);
+}
+
+/* room for the objects there are and n more, those there are placed */
+static int placed_init(vrWorld *w, vrPlaced *p, int n)
+{
+    int cap = w->table.n + n + 1, nb = 16, i;
+    while (nb < 2 * cap) nb *= 2;
+    memset(p, 0, sizeof *p);
+    p->cap = cap;
+    p->mask = nb - 1;
+    p->cell = SPHERE_RADIUS + CUBE_HALF * sqrt(3.0) + SMALL_R + 2 * w->s.collision_dist;
+    p->c = malloc((size_t)cap * sizeof *p->c);
+    p->r = malloc((size_t)cap * sizeof *p->r);
+    p->next = malloc((size_t)cap * sizeof *p->next);
+    p->big = malloc((size_t)cap * sizeof *p->big);
+    p->head = malloc((size_t)nb * sizeof *p->head);
+    if (!p->c || !p->r || !p->next || !p->big || !p->head) return placed_free(p), -1;
+    for (i = 0; i < nb; i++) p->head[i] = -1;
+    for (i = 0; i < w->table.n; i++) place_object(w, p, i);
+    return 0;
+}
+
+static int clear_of(const vrPlaced *p, int i, vec3 c, double r, double gap)
+{
+    return !(vec3_dist(c, p->c[i]) < r + p->r[i] + gap);
+}
+
+/* is a bounding sphere at c of radius r (at most the cell's reach) at
+ * least gap away from every object placed so far (room walls: from their
+ * inner faces)? */
+static int free_spot(const vrPlaced *p, vec3 c, double r, double gap)
+{
+    long long x = cell_of(p, c.x), y = cell_of(p, c.y), z = cell_of(p, c.z), dx, dy, dz;
+    int i;
+    for (i = 0; i < p->nbig; i++)
+        if (!clear_of(p, p->big[i], c, r, gap)) return 0;
+    for (dx = -1; dx <= 1; dx++)
+        for (dy = -1; dy <= 1; dy++)
+            for (dz = -1; dz <= 1; dz++)
+                for (i = p->head[cell_hash(x + dx, y + dy, z + dz) & (unsigned)p->mask]; i >= 0; i = p->next[i])
+                    if (!clear_of(p, i, c, r, gap)) return 0;
     return 1;
 }
 
-static int draw_position(vrWorld *w, double r, vec3 *c)
+static int draw_position(vrWorld *w, const vrPlaced *p, double r, vec3 *c)
 {
     double s = w->s.room > 0 ? w->s.room : 10.0, gap = 2 * w->s.collision_dist;
     double lo = w->s.room > 0 ? r + gap : 0, hi = s - lo;
@@ -95,12 +182,12 @@ static int draw_position(vrWorld *w, double r, vec3 *c)
         c->x = -s / 2 + lo + (hi - lo) * uniform(w);
         c->y = -s / 2 + lo + (hi - lo) * uniform(w);
         c->z = lo + (hi - lo) * uniform(w);
-        if (free_spot(w, *c, r, gap)) return 0;
+        if (free_spot(p, *c, r, gap)) return 0;
     }
     return -1;
 }
 
-static int add_one(vrWorld *w, char *err, size_t n)
+static int add_one(vrWorld *w, vrPlaced *p, char *err, size_t n)
 {
     int k = w->random_next++, sphere = k % 2 == 0;
     double r = sphere ? SPHERE_RADIUS : CUBE_HALF * sqrt(3.0);
@@ -110,7 +197,7 @@ static int add_one(vrWorld *w, char *err, size_t n)
     vec3 c, v, om;
     quat q;
     snprintf(name, sizeof name, "r%d", k);
-    if (draw_position(w, r, &c) != 0) {
+    if (draw_position(w, p, r, &c) != 0) {
         if (err && n) snprintf(err, n, "random: no free place for %s after %d tries", name, MAX_TRIES);
         return -1;
     }
@@ -139,19 +226,26 @@ static int add_one(vrWorld *w, char *err, size_t n)
     d.color[0] = sphere ? 230 : 60;
     d.color[1] = sphere ? 120 : 140;
     d.color[2] = sphere ? 40 : 230;
-    return vrWorld_SetObjectDef(w, id, &d, err, n);
+    if (vrWorld_SetObjectDef(w, id, &d, err, n) != 0) return -1;
+    place_object(w, p, id);
+    return 0;
 }
 
 int vrWorld_AddRandom(vrWorld *w, int n, char *err, size_t errlen)
 {
-    int i;
+    vrPlaced p;
+    int i, rc = 0;
     if (n < 0) {
         if (err && errlen) snprintf(err, errlen, "random: N must be >= 0");
         return -1;
     }
     if (w->s.room > 0 && vrWorld_FindObject(w, "wall0") == VR_NO_OBJECT && make_room(w, w->s.room, err, errlen) != 0)
         return -1;
-    for (i = 0; i < n; i++)
-        if (add_one(w, err, errlen) != 0) return -1;
-    return 0;
+    if (placed_init(w, &p, n) != 0) {
+        if (err && errlen) snprintf(err, errlen, "random: out of memory");
+        return -1;
+    }
+    for (i = 0; i < n && rc == 0; i++) rc = add_one(w, &p, err, errlen);
+    placed_free(&p);
+    return rc;
 }

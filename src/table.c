@@ -31,9 +31,57 @@ static int valid_name(const char *s)
     return 1;
 }
 
+/* ---- the name index: 10,000 objects are created and looked up by name
+ * in time that does not grow with the count (FNV-1a, linear probing) ---- */
+
+static unsigned name_hash(const char *s)
+{
+    unsigned h = 2166136261u;
+    for (; *s; s++) h = (h ^ (unsigned char)*s) * 16777619u;
+    return h;
+}
+
+static void index_put(vrTable *t, int id)
+{
+    unsigned mask = (unsigned)t->indexcap - 1, i = name_hash(t->obj[id]->name) & mask;
+    while (t->index[i] >= 0) i = (i + 1) & mask;
+    t->index[i] = id;
+    t->nindex++;
+}
+
+/* made anew at twice the room needed, without the deleted objects' ids;
+ * without memory the table has no index (lookups walk the table) */
+static void index_remake(vrTable *t)
+{
+    int cap = 64, i;
+    while (cap < 4 * (t->n + 1)) cap *= 2;
+    free(t->index);
+    t->nindex = 0;
+    t->indexcap = 0;
+    if (!(t->index = malloc((size_t)cap * sizeof *t->index))) return;
+    t->indexcap = cap;
+    for (i = 0; i < cap; i++) t->index[i] = -1;
+    for (i = 0; i < t->n; i++)
+        if (t->obj[i]) index_put(t, i);
+}
+
+static void index_add(vrTable *t, int id)
+{
+    if (2 * (t->nindex + 1) > t->indexcap) index_remake(t);
+    else index_put(t, id);
+}
+
 int vrTable_Find(const vrTable *t, const char *name)
 {
     int i;
+    if (t->indexcap) {
+        unsigned mask = (unsigned)t->indexcap - 1, k;
+        for (k = name_hash(name) & mask; t->index[k] >= 0; k = (k + 1) & mask) {
+            const vrObject *o = t->index[k] < t->n ? t->obj[t->index[k]] : NULL;
+            if (o && strcmp(o->name, name) == 0) return t->index[k];
+        }
+        return VR_NO_OBJECT;
+    }
     for (i = 0; i < t->n; i++)
         if (t->obj[i] && strcmp(t->obj[i]->name, name) == 0) return i;
     return VR_NO_OBJECT;
@@ -68,6 +116,7 @@ int vrTable_Add(vrTable *t, const char *name, vrObjectType type, int *id, char *
     t->obj[t->n] = o;
     if (id) *id = t->n;
     t->n++;
+    index_add(t, t->n - 1);
     return 0;
 }
 
@@ -127,6 +176,9 @@ void vrTable_Clear(vrTable *t)
     int i;
     for (i = 0; i < t->n; i++) vrObject_Free(t->obj[i]);
     t->n = 0;
+    free(t->index);
+    t->index = NULL;
+    t->indexcap = t->nindex = 0;
 }
 
 void vrTable_Free(vrTable *t)

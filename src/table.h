@@ -33,6 +33,9 @@ typedef struct vrObject {
 typedef struct vrTable {
     vrObject **obj;          /* by id (creation order); deleted ones stay NULL */
     int n, cap;
+    int *index;              /* ids by name hash, open addressing (-1: empty); a deleted
+                                object's id lingers until the index is made again */
+    int indexcap, nindex;
 } vrTable;
 
 vrObject *vrTable_Get(const vrTable *t, int id);

@@ -43,7 +43,9 @@ static int test_far_furniture_costs_no_checks(void)
     ENSURE(vrScene_Stats(bare).collisions > 5);
     ENSURE(memcmp(&s0, &s1, sizeof s0) == 0 && memcmp(&s0, &s2, sizeof s0) == 0);
     ENSURE(vrScene_Stats(full).checks <= vrScene_Stats(bare).checks + 20);   /* one look each, at the start */
-    ENSURE(vrScene_Stats(off).checks > vrScene_Stats(full).checks + 20 * 100);
+    /* heap = 0 looks at every pair that has a record at every internal
+     * step; the far cupboards' pairs have none (SPEC 10, pair_life.c) */
+    ENSURE(vrScene_Stats(off).checks > vrScene_Stats(full).checks);
     vrWorld_Destroy(bare); vrWorld_Destroy(full); vrWorld_Destroy(off);
     return 0;
 }

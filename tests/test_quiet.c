@@ -90,7 +90,9 @@ static int test_quiet_supports_cost_a_check_a_frame_and_no_bit(void)
     ENSURE(vrScene_State(a, 3).position[2] > -0.95);         /* the plate slides on the floor */
     ENSURE(vrScene_Stats(a).collisions > 0);                 /* the tipper lands on the floor */
     ENSURE(vrScene_Stats(a).subframes > 100);
-    ENSURE(vrScene_Stats(a).checks * 5 < vrScene_Stats(b).checks);
+    /* heap = 0 looks at the pairs with a record (those whose boxes meet,
+     * SPEC 10) at every internal step, no longer at the far ones too */
+    ENSURE(vrScene_Stats(a).checks < vrScene_Stats(b).checks);
     vrWorld_Destroy(a);
     vrWorld_Destroy(b);
     return 0;

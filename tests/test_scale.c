@@ -1,0 +1,184 @@
+/* test_scale.c — SPEC 10: 10,000 objects.  A pair's record exists only
+ * while its bodies' boxes meet (src/pair_life.c), so the memory a room of
+ * flying objects takes grows with the objects, not with the n(n-1)/2 pairs
+ * (50 M for 10,000: gigabytes if each had a record); and the runs keep
+ * their bits: heap on and off agree with objects created and deleted
+ * mid-run at 10,000 objects, and the serial run agrees with workers (the
+ * workers hold explicit pair lists, the serial owner lazy records: two
+ * different books of the same pairs).  Frames per second and peak memory
+ * are bench/bench_scale.c's. */
+#define _DEFAULT_SOURCE
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include "test.h"
+#include "vroc.h"
+#include "scene.h"
+
+#define BIG 10000
+
+/* SPEC 10's room: N objects flying in a room of side s without gravity, no
+ * clamp taking energy out */
+static vrWorld *flying_room(int n, double side, int heap)
+{
+    vrWorld *w = vrWorld_Create();
+    vrSettings s = *vrWorld_Settings(w);
+    char err[256] = "";
+    s.room = side;
+    s.seed = 10000;
+    s.collision_dist = 0.01;
+    s.time_step = 0.05;
+    s.max_linear = 1000;
+    s.max_angular = 10000;
+    s.heap = heap;
+    if (vrWorld_SetSettings(w, &s, err, sizeof err) != 0 || vrWorld_AddRandom(w, n, err, sizeof err) != 0) {
+        printf("    room of %d: %s\n", n, err);
+        vrWorld_Destroy(w);
+        return NULL;
+    }
+    return w;
+}
+
+/* mid-run edits: every stride-th random object from `first` deleted, and
+ * in the place of the first `born` of them a ball of 0.1 m (inside the
+ * deleted object's own bounding sphere, so clear of the others), flying */
+static int replace_some(vrWorld *w, int n, int first, int stride, int born)
+{
+    char name[32];
+    int k, made = 0;
+    for (k = first; k < n; k += stride) {
+        vrObjectId id;
+        vrObjectState st;
+        snprintf(name, sizeof name, "r%d", k);
+        id = vrWorld_FindObject(w, name);
+        if (vrWorld_GetObjectState(w, id, &st) != 0 || vrWorld_DeleteObject(w, id) != 0) return -1;
+        if (made >= born) continue;
+        snprintf(name, sizeof name, "late%d", made++);
+        if (vrScene_Sphere(w, name, 0.1, vec3_make(st.position[0], st.position[1], st.position[2]),
+                           vec3_make(0, 1, -1), 1, 1) == VR_NO_OBJECT) return -1;
+    }
+    return 0;
+}
+
+static int edit_mid_run(vrWorld *w) { return replace_some(w, BIG, 0, 97, 40); }
+
+static int run_edited(vrWorld *w, unsigned long long *hash, vrStats *st)
+{
+    if (!w || vrScene_Step(w, 2) != 0 || edit_mid_run(w) != 0 || vrScene_Step(w, 2) != 0) return -1;
+    *hash = vrScene_DumpHash(w);
+    *st = vrScene_Stats(w);
+    return 0;
+}
+
+static int test_heap_on_and_off_agree_at_10000_objects_with_edits(void)
+{
+    vrWorld *a = flying_room(BIG, 60, 1), *b = flying_room(BIG, 60, 0);
+    unsigned long long ha = 0, hb = 1;
+    vrStats sa, sb;
+    int ra = run_edited(a, &ha, &sa), rb = run_edited(b, &hb, &sb);
+    vrWorld_Destroy(a);
+    vrWorld_Destroy(b);
+    ENSURE(ra == 0 && rb == 0);
+    printf("    %d objects, %lld collisions, %lld live pairs of %ld\n", sa.objects, sa.collisions, sa.live_pairs,
+           sa.pairs);
+    ENSURE(sa.objects == 6 + BIG - (BIG + 96) / 97 + 40);
+    ENSURE(sa.collisions > 0);            /* the runs did something to agree on */
+    ENSURE_MSG(ha == hb, "dumps differ: heap on %llx, off %llx", ha, hb);
+    ENSURE(sa.collisions == sb.collisions);
+    /* the logical count stays n(n-1)/2 + the walls' pairs; the records are
+     * the close few (a thousandth of a percent) */
+    ENSURE(sa.pairs == (long)(sa.dynamic) * (sa.dynamic - 1) / 2 + 6L * sa.dynamic);
+    ENSURE_MSG(sa.live_pairs > 0 && sa.live_pairs < 2 * sa.objects, "%lld live pairs", sa.live_pairs);
+    return 0;
+}
+
+/* the peak memory (kB, wait4's ru_maxrss) of a fresh vroc ($VROC_BUILD/vroc,
+ * as tests/run.sh sets it) that builds a room of n objects and flies it 3
+ * frames: a process of its own, so that the figure is its own; -1 on
+ * failure (no vroc is a failure, not a skip) */
+static long room_kb(int n, double side)
+{
+    const char *build = getenv("VROC_BUILD");
+    char vroc[512], script[] = "/tmp/vroc-test-scale-XXXXXX";
+    int fd = mkstemp(script), status = 0;
+    struct rusage ru;
+    FILE *f;
+    pid_t pid;
+    if (!build || fd < 0 || !(f = fdopen(fd, "w"))) return -1;
+    fprintf(f, "seed = 10000\ncollision_dist = 0.01\ntime_step = 0.05\nmax_linear = 1000\nmax_angular = 10000\n"
+               "max_frames = 0\nroom = %.17g\nrandom %d\nstart\nstep 3\n", side, n);
+    fclose(f);
+    snprintf(vroc, sizeof vroc, "%s/vroc", build);
+    if ((pid = fork()) == 0) {
+        if (!freopen(script, "r", stdin) || !freopen("/dev/null", "w", stdout)) _exit(2);
+        execl(vroc, vroc, "-q", "-b", (char *)NULL);
+        _exit(3);
+    }
+    if (pid < 0 || wait4(pid, &status, 0, &ru) != pid) ru.ru_maxrss = -1;
+    unlink(script);
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? ru.ru_maxrss : -1;
+}
+
+/* Four times the objects at the same density: sixteen times the pairs,
+ * about four times the memory.  With a record per pair (some 100 bytes
+ * each) 10,000 objects would take 5 GB and the step from 2,500 would cost
+ * over 300 kB per added object; the measured cost per object is printed
+ * (under ASan here, whose shadow and quarantine inflate it; bench_scale
+ * reports the release build's) */
+static int test_memory_grows_with_the_objects_not_the_pairs(void)
+{
+    long small = room_kb(BIG / 4, 60 / 1.5874), big = room_kb(BIG, 60);   /* 4^(1/3) = 1.5874 */
+    double per_object;
+    ENSURE_MSG(small > 0 && big > small, "%ld kB, %ld kB (VROC_BUILD=%s)", small, big,
+               getenv("VROC_BUILD") ? getenv("VROC_BUILD") : "unset");
+    per_object = (big - small) * 1024.0 / (BIG - BIG / 4);
+    printf("    %ld kB for %d objects, %ld kB for %d: %.0f bytes per added object\n", small, BIG / 4, big, BIG,
+           per_object);
+    ENSURE_MSG(per_object < 100e3, "%.0f bytes per object", per_object);
+    ENSURE_MSG(big < 2L * 1024 * 1024, "%ld kB", big);
+    return 0;
+}
+
+/* serial (lazy records) against workers (lists of every pair they own)
+ * through deletions and additions; in one process (memq://) */
+static unsigned long long hash_with(int gps, int n, vrStats *st)
+{
+    vrWorld *w = flying_room(n, 8, 1);
+    vrSettings s;
+    unsigned long long h = 0;
+    if (!w) return 0;
+    s = *vrWorld_Settings(w);
+    s.gps = gps;
+    snprintf(s.lcm_url, sizeof s.lcm_url, "memq://");
+    vrWorld_SetSettings(w, &s, NULL, 0);
+    if (vrScene_Step(w, 20) != 0 || replace_some(w, n, 1, 9, 10) != 0) goto done;
+    if (vrScene_Step(w, 20) != 0) goto done;
+    h = vrScene_DumpHash(w);
+    *st = vrScene_Stats(w);
+done:
+    vrWorld_Destroy(w);
+    return h;
+}
+
+static int test_serial_lazy_pairs_agree_with_workers_through_edits(void)
+{
+    vrStats s0, s2, s3;
+    unsigned long long h0 = hash_with(0, 300, &s0), h2 = hash_with(2, 300, &s2), h3 = hash_with(3, 300, &s3);
+    ENSURE(h0 != 0 && h2 != 0 && h3 != 0);
+    printf("    %lld collisions; live pairs: serial %lld, 2 workers %lld\n", s0.collisions, s0.live_pairs,
+           s2.live_pairs);
+    ENSURE(s0.collisions > 50);
+    ENSURE_MSG(h0 == h2 && h0 == h3, "serial %llx, 2 workers %llx, 3 workers %llx", h0, h2, h3);
+    ENSURE(s0.live_pairs < s0.pairs / 10);
+    return 0;
+}
+
+static const vrTest tests[] = {
+    TEST(test_heap_on_and_off_agree_at_10000_objects_with_edits),
+    TEST(test_memory_grows_with_the_objects_not_the_pairs),
+    TEST(test_serial_lazy_pairs_agree_with_workers_through_edits),
+};
+
+const vrTestSuite vrSuite_Scale = {"scale", tests, TEST_COUNT(tests), NULL, NULL, 0};
