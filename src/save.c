@@ -12,7 +12,7 @@
 static const vrSaveSection sections[] = {
     {"body", "t0 " STATE_KEYS " quiet owed frame_x frame_q", 1, vrSave_WriteBody, vrSave_ReadBody},
     {"clock", "t frames t_base frames_base instant instant_t settings_due", 0, vrSave_WriteClock, vrSave_ReadClock},
-    {"counters", "collisions island_steps island_contacts checks heap_pops klu_solves klu_refactors klu_factors subframes",
+    {"counters", "collisions island_steps island_contacts checks heap_pops klu_solves klu_refactors klu_factors subframes clamps",
      0, vrSave_WriteCounters, vrSave_ReadCounters},
     {"random", "next stream", 0, vrSave_WriteRandom, vrSave_ReadRandom},
     {"warm", "a b h n points " POINT_KEYS " friction twist", 0, vrSave_WriteWarm, vrSave_ReadWarm},

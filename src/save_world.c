@@ -63,6 +63,7 @@ static const Counter counters[] = {
     {"klu_refactors", offsetof(vrWorld, retired.response.refactors), 0},
     {"klu_factors", offsetof(vrWorld, retired.response.factors), 0},
     {"subframes", offsetof(vrWorld, subframes), 1},
+    {"clamps", offsetof(vrWorld, clamps), 0},
 };
 #define NCOUNTERS ((int)(sizeof counters / sizeof counters[0]))
 

@@ -76,13 +76,13 @@ dump
 stats
 EOF2
 }
-clamp_scene 0 | "$vroc" -q 2>"$tmp/c.err" | sed -E 's/ [a-z_]+_ms=[0-9.]+//g; s/ (gps|messages|copies|gp_[a-z]+|foreign|malformed)=[^ ]*//g; s/ (checks|heap_pops|klu_[a-z]+)=[0-9]+//g' >"$tmp/c.serial"
+clamp_scene 0 | "$vroc" -q 2>"$tmp/c.err" | sed -E 's/ [a-z_]+_ms=[0-9.]+//g; s/ (gps|messages|copies|gp_[a-z]+|foreign|malformed|live_pairs)=[^ ]*//g; s/ (checks|heap_pops|klu_[a-z]+)=[0-9]+//g' >"$tmp/c.serial"
 grep -q 'clamps=[1-9]' "$tmp/c.serial" && passed=$((passed + 1)) ||
     { echo "FAIL clamps: the scene cut no velocity (stats clamps=0): it proves nothing"; failed=$((failed + 1)); }
 for cfg in "2 memq://" "2" "3"; do
     set -- $cfg
     clamp_scene "$1" "${2:-}" | "$vroc" -q 2>"$tmp/c.err" |
-        sed -E 's/ [a-z_]+_ms=[0-9.]+//g; s/ (gps|messages|copies|gp_[a-z]+|foreign|malformed)=[^ ]*//g; s/ (checks|heap_pops|klu_[a-z]+)=[0-9]+//g' >"$tmp/c.par"
+        sed -E 's/ [a-z_]+_ms=[0-9.]+//g; s/ (gps|messages|copies|gp_[a-z]+|foreign|malformed|live_pairs)=[^ ]*//g; s/ (checks|heap_pops|klu_[a-z]+)=[0-9]+//g' >"$tmp/c.par"
     if [ -s "$tmp/c.serial" ] && cmp -s "$tmp/c.serial" "$tmp/c.par" && [ ! -s "$tmp/c.err" ]; then
         passed=$((passed + 1))
     else
