@@ -166,7 +166,7 @@ static int remake_sweep(vrBroadphase *bp, vrBody *const *body, int nbody)
     bp->stale = 0;
     for (i = 0; i < bp->nsweep; i++) vrBroad_Box(bp, body, bp->sweep[i]);
     sorting = bp;
-    qsort(bp->sweep, (size_t)bp->nsweep, sizeof *bp->sweep, cmp_sweep);
+    if (bp->nsweep > 1) qsort(bp->sweep, (size_t)bp->nsweep, sizeof *bp->sweep, cmp_sweep);   /* none: sweep may be NULL */
     return 0;
 }
 

@@ -12,6 +12,7 @@
 #include "parallel/worker.h"
 #include "vroc_earliest_t.h"
 #include "vroc_frame_start_t.h"
+#include "parallel/wire.h"
 #include "../tools/fuzz/lcm_records.h"
 
 #define FRAME_NSTATES_AT 74   /* hash, run, seq, t (8 each), grid (40), two int8 */
@@ -131,7 +132,24 @@ static int test_messages_the_fuzzer_crashed_a_worker_with_are_dropped(void)
     return 0;
 }
 
+/* a frame_start whose grid has more steps than any frame may take: the
+ * hang make fuzz found (a worker looking ahead over 10^18 grid points) */
+static int test_grids_past_a_frames_steps_are_refused(void)
+{
+    vroc_grid_t m;
+    vrGrid g;
+    memset(&m, 0, sizeof m);
+    m.t0 = 0, m.T = 0.01, m.frame_T = 0.01, m.n = 2 * (int64_t)VR_FRAME_STEPS_MAX, m.h = m.T / (double)m.n;
+    ENSURE(vrWire_GetGrid(&m, &g) == 0 && g.n == m.n);
+    m.n = m.n + 1;
+    ENSURE(vrWire_GetGrid(&m, &g) != 0);
+    m.n = (int64_t)1 << 60;
+    ENSURE(vrWire_GetGrid(&m, &g) != 0);
+    return 0;
+}
+
 static const vrTest tests[] = {
+    TEST(test_grids_past_a_frames_steps_are_refused),
     TEST(test_array_counts_past_the_message_are_refused),
     TEST(test_strings_that_do_not_fit_or_end_are_refused),
     TEST(test_messages_the_fuzzer_crashed_a_worker_with_are_dropped),
