@@ -11,7 +11,7 @@
  *   write_def        an object's definition (the library's callback)
  *   run_save, run_state
  */
-#define _XOPEN_SOURCE 700   /* realpath */
+#define _XOPEN_SOURCE 700   /* realpath */ /* NOLINT(bugprone-reserved-identifier): the feature test macro POSIX names */
 #include <errno.h>
 #include <limits.h>
 #include <stdlib.h>
@@ -41,7 +41,7 @@ static void put_vec(FILE *out, const double *v, int count)
 /* `name = value` of command c from the field at c->offset of base */
 static void put_value(FILE *out, const char *indent, const Command *c, const void *base)
 {
-    const char *f = (const char *)base + c->offset;
+    const void *f = (const char *)base + c->offset;   /* the field, of the kind c says */
     fprintf(out, "%s%s = ", indent, c->name);
     switch (c->kind) {
     case K_NUM: put_num(out, *(const double *)f); break;

@@ -76,6 +76,7 @@ static int check_lcm_url(const char *url, char *err, size_t n)
     unsigned a, b, c, d, port;
     char end = 0;
     if (strncmp(url, "memq://", 7) == 0) return 0;
+    /* NOLINTNEXTLINE(cert-err34-c): widths bound each field, and the ranges below refuse what sscanf cannot */
     if (sscanf(url, "udpm://%3u.%3u.%3u.%3u:%5u%c", &a, &b, &c, &d, &port, &end) < 5 || (end && end != '?')
         || a < 224 || a > 239 || b > 255 || c > 255 || d > 255 || port == 0 || port > 65535)
         return vrGeom_Fail(err, n, "lcm_url must be memq:// or udpm://GROUP:PORT[?options] with a multicast "

@@ -121,7 +121,7 @@ int vrSave_ReadGap(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n)
 {
     vrTable *t = &w->table;
     (void)id, (void)l;
-    if (vrGrow((void **)&t->obj, &t->cap, t->n + 1, sizeof *t->obj) != 0) {
+    if (vrGrow((void **)&t->obj, &t->cap, t->n + 1, sizeof *t->obj) != 0) { /* NOLINT(bugprone-sizeof-expression): an array of pointers */
         snprintf(err, n, "out of memory");
         return -1;
     }

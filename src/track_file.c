@@ -7,7 +7,7 @@
  *   parse_line   a line into a device and a sample
  *   read_lines   every line of the stream, each handed to the callback
  */
-#define _POSIX_C_SOURCE 200809L
+#define _POSIX_C_SOURCE 200809L /* NOLINT(bugprone-reserved-identifier): the feature test macro POSIX names */
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
