@@ -87,5 +87,29 @@ gps = 0
 step 2
 delete r3
 dump
+
+# the merged environment and save: a track file, collision sounds, a save
+# read back in a fresh world
+restart
+gravity
+time_step = 0.05
+sound_log = vg_sounds.log
+cube floor
+  size = (1, 1, 0.1)
+  mass = -1
+sphere ball
+  radius = 0.1
+  translate = (0, 0, 0.6)
+  elasticity = 0.5
+track hand.trk
+step 20
+show head
+show hand
+save vg.save
+restart
+read vg.save
+step 5
+dump
+sound_log =
 restart
 quit
