@@ -9,6 +9,7 @@
  *   put_value        one statement of the table, from a struct's field
  *   write_settings   settings and view
  *   write_def        an object's definition (the library's callback)
+ *   write_header     what the file is, and what it does not reconnect
  *   run_save, run_state
  */
 #define _XOPEN_SOURCE 700   /* realpath */ /* NOLINT(bugprone-reserved-identifier): the feature test macro POSIX names */
@@ -106,10 +107,26 @@ static void write_def(void *ctx, FILE *out, vrObjectId id)
         if (sh_commands[i].target == T_OBJECT && wanted(&sh_commands[i], &d)) put_value(out, "  ", &sh_commands[i], &d);
 }
 
+/* A live tracker is a source, not state: reconnecting it would not give
+ * the saved run again (its samples would come at other times), so the
+ * reader takes the samples received, as `state sample` lines, and the
+ * file says the subscription was left out. */
+static void write_header(Shell *sh, FILE *out)
+{
+    vrStats s;
+    vrWorld_GetStats(sh->world, &s);
+    fprintf(out, "# vroc %s save: frame %ld, t = ", VROC_VERSION, s.frames);
+    put_num(out, s.time);
+    fprintf(out, " s, %d objects.\n# `vroc FILE` (or `read FILE` in a fresh vroc) goes on from here bit for bit;\n"
+                 "# `man vroc`, SAVE, tells what each line holds and which may be edited.\n", s.objects);
+    if (sh->trackers)
+        fputs("# Live trackers (trackers = URL) were listened to: the samples they sent are saved below\n"
+              "# as `state sample` lines; reading this file does not listen to them again.\n", out);
+}
+
 int run_save(Shell *sh, const Stmt *st, char *err, size_t n)
 {
     char path[VR_PATH_MAX];
-    vrStats s;
     FILE *out;
     int bad;
     if (sh_resolve_path(sh, st->text, st->textlen, path, sizeof path) != 0) {
@@ -120,11 +137,7 @@ int run_save(Shell *sh, const Stmt *st, char *err, size_t n)
         snprintf(err, n, "cannot write '%s': %s", path, strerror(errno));
         return -1;
     }
-    vrWorld_GetStats(sh->world, &s);
-    fprintf(out, "# vroc %s save: frame %ld, t = ", VROC_VERSION, s.frames);
-    put_num(out, s.time);
-    fprintf(out, " s, %d objects.\n# `vroc FILE` (or `read FILE` in a fresh vroc) goes on from here bit for bit;\n"
-                 "# `man vroc`, SAVE, tells what each line holds and which may be edited.\n", s.objects);
+    write_header(sh, out);
     write_settings(sh, out);
     bad = vrWorld_WriteSave(sh->world, out, write_def, sh);
     if (fclose(out) != 0 || bad) {

@@ -1,7 +1,7 @@
 /* save.c — the sections of a saved file and their driver (save.h).
  *   sections            every piece of state, in the order it is written
  *   vrWorld_WriteSave   the file: definitions (the shell's) and sections
- *   vrWorld_ReadState   one `state` line
+ *   vrWorld_ReadState   one `state` line: its section found in the table
  */
 #include <string.h>
 #include "owners.h"
@@ -17,6 +17,13 @@ static const vrSaveSection sections[] = {
     {"random", "next stream", 0, vrSave_WriteRandom, vrSave_ReadRandom},
     {"warm", "a b h n points " POINT_KEYS " friction twist", 0, vrSave_WriteWarm, vrSave_ReadWarm},
     {"pending", "obj t raw " STATE_KEYS, 0, vrSave_WritePending, vrSave_ReadPending},
+    {"sample", "device t x q buttons", 0, vrSave_WriteSamples, vrSave_ReadSample},
+    {"sound_pair", "a b t", 0, vrSave_WriteSoundPairs, vrSave_ReadSoundPair},
+    /* New state goes here, one line: its word (read as `state WORD ...`;
+     * the dispatcher below finds it by this table, nothing else to add),
+     * the keys its lines may hold, per object or not, and its writer and
+     * reader (save_sections.h).  The grab's state (src/grab*.c) is one:
+     * written after the samples it holds on to, before `live`. */
     {"gap", "", 0, NULL, vrSave_ReadGap},   /* written by the driver, for a deleted object's id */
     {"live", "", 0, vrSave_WriteLive, vrSave_ReadLive},   /* last: the saved run goes live */
 };
@@ -42,7 +49,8 @@ int vrWorld_WriteSave(vrWorld *w, FILE *out, vrDefWriter def, void *ctx)
         def(ctx, out, i);
         write_sections(w, i, 1, out);
     }
-    fputs("\n# the run: clock, counters, random stream, warm starts, states not yet heard by the owners\n", out);
+    fputs("\n# the run: clock, counters, random stream, warm starts, states not yet heard by the owners,\n"
+          "# the head's and hand's samples still needed, the pairs whose sound is still refractory\n", out);
     write_sections(w, VR_NO_OBJECT, 0, out);
     return ferror(out) ? -1 : 0;
 }
@@ -72,6 +80,7 @@ int vrWorld_ReadState(vrWorld *w, vrObjectId selected, const char *text, size_t 
     size_t k = 0;
     char words[160];
     while (k < len && text[k] != ' ' && text[k] != '\t') k++;
+    /* a new `state WORD` needs no code here: a line in sections[] */
     if (!(s = find_section(text, k))) {
         list_sections(words, sizeof words);
         snprintf(err, n, "unknown state '%.*s' (one of %s)", (int)(k > 40 ? 40 : k), text, words);

@@ -6,7 +6,8 @@
  * one section per piece of state, each section a writer and a reader in
  * one table (save.c): the clock and counters, the random stream, each
  * body's anchor and rest, the warm starts, the states the owners had not
- * heard of.  New state (grabs, tracks) is one more section.
+ * heard of, the trackers' samples, the sounds' refractory times.  New
+ * state (the grab's) is one more section: save_sections.h tells how.
  *
  * Reading: the world-wide lines act on the world at once; a body's line
  * stays on its object (saved.h) until the start makes it live; the start

@@ -163,8 +163,7 @@ void vrSave_WriteWarm(vrWorld *w, int id, FILE *out)
     }
 }
 
-/* an object by name: key's value */
-static int get_object(vrWorld *w, vrSaveLine *l, const char *key, int *id, char *err, size_t n)
+int vrSave_GetObject(vrWorld *w, vrSaveLine *l, const char *key, int *id, char *err, size_t n)
 {
     char name[VR_NAME_MAX + 1];
     if (vrSaveLine_Word(l, key, name, sizeof name, err, n) != 0) return -1;
@@ -195,7 +194,7 @@ int vrSave_ReadWarm(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n)
     int a, b;
     (void)id;
     memset(&c, 0, sizeof c);
-    if (get_object(w, l, "a", &a, err, n) || get_object(w, l, "b", &b, err, n)
+    if (vrSave_GetObject(w, l, "a", &a, err, n) || vrSave_GetObject(w, l, "b", &b, err, n)
         || vrSaveLine_Numbers(l, "h", &h, 1, 0, err, n) || get_vec(l, "n", &c.n, err, n) || read_points(l, &c, err, n)
         || get_vec(l, "friction", &c.friction, err, n) || vrSaveLine_Numbers(l, "twist", &c.twist, 1, 0, err, n))
         return -1;
@@ -234,7 +233,7 @@ int vrSave_ReadPending(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n)
     vrResume *r;
     (void)id;
     memset(&st, 0, sizeof st);
-    if (get_object(w, l, "obj", &st.id, err, n) || vrSaveLine_Numbers(l, "t", &st.t, 1, 0, err, n)
+    if (vrSave_GetObject(w, l, "obj", &st.id, err, n) || vrSaveLine_Numbers(l, "t", &st.t, 1, 0, err, n)
         || get_int(l, "raw", 0, 1, &st.raw, err, n) || get_state(l, st.id, &st, err, n))
         return -1;
     if (!(r = vrSave_Resumed(w))

@@ -1,7 +1,11 @@
 /* save_sections.h — the sections of a saved file (save.h), each a writer
  * and a reader of `state WORD key=value ...` lines.
  *   save_world.c   clock, counters, random, gap, live
- *   save_body.c    body, warm, pending */
+ *   save_body.c    body, warm, pending
+ *   save_track.c   sample (the head's and the hand's samples still needed)
+ *   save_sound.c   sound_pair (the collision sounds' refractory times)
+ * A new piece of state (the grab's, say) is a file of its own with a
+ * writer and a reader declared here and one line in save.c's table. */
 #ifndef VROC_SAVE_SECTIONS_H
 #define VROC_SAVE_SECTIONS_H
 
@@ -26,5 +30,13 @@ void vrSave_WriteWarm(vrWorld *w, int id, FILE *out);
 int vrSave_ReadWarm(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
 void vrSave_WritePending(vrWorld *w, int id, FILE *out);
 int vrSave_ReadPending(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
+
+/* an object named by key's value: its id, or an error naming the name */
+int vrSave_GetObject(vrWorld *w, vrSaveLine *l, const char *key, int *id, char *err, size_t n);
+
+void vrSave_WriteSamples(vrWorld *w, int id, FILE *out);
+int vrSave_ReadSample(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
+void vrSave_WriteSoundPairs(vrWorld *w, int id, FILE *out);
+int vrSave_ReadSoundPair(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
 
 #endif

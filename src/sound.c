@@ -4,6 +4,7 @@
  *   forget_quiet   the pairs whose refractory time is over
  *   recent         whether a pair sounded within it
  *   vrSounds_Note  an impact: an event, or none
+ *   vrSounds_Remember   a pair's last sound, read back from a save
  *
  * The speed of an impact is its approach n.u at the impulse's point, as
  * the owner found it when it found the event: the same bits whatever the
@@ -50,11 +51,8 @@ int vrSounds_Note(vrSounds *s, const vrEvent *ev, const vrSettings *set)
     if (!(speed > set->sound_min_speed)) return 0;
     forget_quiet(s, ev->t);
     if (recent(s, ev->order)) return 0;
-    if (grow((void **)&s->ev, &s->cap, s->n + 1, sizeof *s->ev) != 0
-        || grow((void **)&s->last, &s->lastcap, s->nlast + 1, sizeof *s->last) != 0)
+    if (grow((void **)&s->ev, &s->cap, s->n + 1, sizeof *s->ev) != 0 || vrSounds_Remember(s, ev->order, ev->t) != 0)
         return -1;
-    s->last[s->nlast].order = ev->order;
-    s->last[s->nlast++].t = ev->t;
     e = &s->ev[s->n++];
     e->t = ev->t;
     e->speed = speed;
@@ -62,6 +60,14 @@ int vrSounds_Note(vrSounds *s, const vrEvent *ev, const vrSettings *set)
     e->position[0] = ev->c.x, e->position[1] = ev->c.y, e->position[2] = ev->c.z;
     e->a = ev->a;
     e->b = ev->b;
+    return 0;
+}
+
+int vrSounds_Remember(vrSounds *s, long long order, double t)
+{
+    if (grow((void **)&s->last, &s->lastcap, s->nlast + 1, sizeof *s->last) != 0) return -1;
+    s->last[s->nlast].order = order;
+    s->last[s->nlast++].t = t;
     return 0;
 }
 

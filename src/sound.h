@@ -26,6 +26,9 @@ typedef struct vrSounds {
 int vrSounds_Note(vrSounds *s, const vrEvent *ev, const vrSettings *set);
 /* a new frame: the last frame's events go */
 void vrSounds_Frame(vrSounds *s);
+/* a pair that sounded at t (a saved file's, SPEC 11): it stays quiet
+ * until its refractory time is over.  -1 when out of memory. */
+int vrSounds_Remember(vrSounds *s, long long order, double t);
 /* every pair may sound again (restart) */
 void vrSounds_Clear(vrSounds *s);
 void vrSounds_Free(vrSounds *s);

@@ -5,6 +5,7 @@
  */
 #define _XOPEN_SOURCE 700   /* open_memstream */
 #include <float.h>
+#include <math.h>
 #include <stdlib.h>
 #include "test.h"
 #include "scene.h"
@@ -119,10 +120,88 @@ static int test_a_pile_saved_mid_run_goes_on_bit_for_bit_in_a_fresh_world(void)
     return 0;
 }
 
+/* head and hand samples at times and poses of arbitrary bits, every 0.037 s */
+static int push_samples(vrWorld *w, int count)
+{
+    char err[200];
+    int k, dev;
+    for (k = 0; k < count; k++)
+        for (dev = 0; dev < 2; dev++) {
+            vrTrackerSample s;
+            double a = 0.01 + 0.3 * k + dev;
+            memset(&s, 0, sizeof s);
+            s.t = 0.037 * k + 0.011 * dev;
+            s.position[0] = 0.1 * k / 3.0, s.position[1] = -3 + dev / 7.0, s.position[2] = 1.7 - 0.01 * k;
+            s.orientation[0] = cos(a / 2), s.orientation[3] = sin(a / 2);
+            s.buttons = dev == VR_DEVICE_HAND ? (unsigned)(k / 5 % 2) : 0;
+            if (vrWorld_PushSample(w, (vrDevice)dev, &s, err, sizeof err) != 0) return printf("    %s\n", err), -1;
+        }
+    return 0;
+}
+
+static int same_pose(const vrWorld *a, const vrWorld *b, vrDevice dev)
+{
+    vrTrackerSample x, y;
+    if (vrWorld_TrackerPose(a, dev, &x) != 0 || vrWorld_TrackerPose(b, dev, &y) != 0) return 0;
+    return memcmp(x.position, y.position, sizeof x.position) == 0 && x.buttons == y.buttons
+           && memcmp(x.orientation, y.orientation, sizeof x.orientation) == 0 && same_bits(x.t, y.t);
+}
+
+static int same_sounds(const vrWorld *a, const vrWorld *b, int *count)
+{
+    const vrSoundEvent *x, *y;
+    int n = vrWorld_FrameSounds(a, &x), k;
+    if (n != vrWorld_FrameSounds(b, &y)) return 0;
+    for (k = 0; k < n; k++)
+        if (!same_bits(x[k].t, y[k].t) || !same_bits(x[k].volume, y[k].volume) || x[k].a != y[k].a || x[k].b != y[k].b)
+            return 0;
+    *count += n;
+    return 1;
+}
+
+/* a ball between two plates, each hit every 0.0667 s (0.1 m at 3 m/s), so
+ * the 0.1 s refractory time keeps every other hit quiet; head and hand
+ * samples play on.  Saved at 0.35 s, between a sounded hit on lo (0.310 s)
+ * and a quiet one (0.376 s): the fresh world's poses and sounds are the
+ * saving world's, frame after frame, and the file holds only the samples
+ * a time from 0.35 s on needs. */
+static int test_tracker_samples_and_refractory_sounds_go_on_after_a_save(void)
+{
+    vrWorld *a = vrScene_World(0.05, 0.01, 0), *b = vrWorld_Create();
+    char *text = NULL, *p;
+    size_t len = 0;
+    FILE *out = open_memstream(&text, &len);
+    int f, lines = 0, sounds = 0;
+    vrScene_Box(a, "lo", vec3_make(1, 1, 0.05), vec3_make(0, 0, 0), -1, 1);
+    vrScene_Box(a, "hi", vec3_make(1, 1, 0.05), vec3_make(0, 0, 0.4), -1, 1);
+    vrScene_Sphere(a, "ball", 0.1, vec3_make(0, 0, 0.2), vec3_make(0.1, 0, 3), 1, 1);
+    ENSURE(push_samples(a, 60) == 0);
+    ENSURE(vrScene_Step(a, 7) == 0);
+    ENSURE(out && vrWorld_WriteSave(a, out, def_line, NULL) == 0);
+    fclose(out);
+    for (p = text; (p = strstr(p, "state sample ")); p++) lines++;
+    /* 60 samples a device, 0.037 s apart: 10 of each (from 0 and from
+     * 0.011 s) are at or before 0.35 s, all but the last of them forgotten */
+    ENSURE_MSG(lines == 2 * (60 - 9), "%d sample lines", lines);
+    ENSURE(strstr(text, "state sound_pair a=lo b=ball t=0.3103"));
+    ENSURE(read_save(a, b, text) == 0);
+    for (f = 0; f < 20; f++) {
+        ENSURE(vrScene_Step(a, 1) == 0 && vrScene_Step(b, 1) == 0);
+        ENSURE_MSG(same_pose(a, b, VR_DEVICE_HEAD) && same_pose(a, b, VR_DEVICE_HAND), "frame %d: poses differ", f);
+        ENSURE_MSG(same_sounds(a, b, &sounds), "frame %d: sounds differ", f);
+    }
+    ENSURE(sounds >= 8 && vrScene_SameDumps(a, b));
+    free(text);
+    vrWorld_Destroy(a);
+    vrWorld_Destroy(b);
+    return 0;
+}
+
 static const vrTest tests[] = {
     TEST(test_saved_numbers_read_back_to_the_same_bits),
     TEST(test_a_state_line_reads_vectors_hex_floats_and_refuses_nan),
     TEST(test_a_pile_saved_mid_run_goes_on_bit_for_bit_in_a_fresh_world),
+    TEST(test_tracker_samples_and_refractory_sounds_go_on_after_a_save),
 };
 
 const vrTestSuite vrSuite_Save = {"save", tests, TEST_COUNT(tests), NULL, NULL, 0};
