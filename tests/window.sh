@@ -2,7 +2,7 @@
 # tests/window.sh — the live window (SPEC 9) under Xvfb, driven by xdotool,
 # seen by tests/x11/xshot (the window's pixels as the X server holds them):
 #   the window shows the frame's pixels (the screenshot is the frame file)
-#   a drag turns the view as the trackball formula says
+#   a drag turns the view as the trackball formula says, and `save` keeps it
 #   the prompt (a pipe) answers while the window runs; space runs time
 #   see_through from its key; side and anaglyph compose the eyes
 #   the mouse as the hand: picks the ball, moves on the plane facing the
@@ -109,7 +109,7 @@ if [ -n "$id" ]; then
     xdotool mousemove --window "$id" 300 256 mousedown 1 sleep 0.05 mousemove --window "$id" 364 256 \
         sleep 0.05 mousemove --window "$id" 428 256 sleep 0.05 mouseup 1
     sleep 0.3
-    say "frames = f2" refresh "dump"
+    say "frames = f2" refresh "save drag.vroc" "dump"
     wait_for "$tmp/out" '^blue,.*$' && sleep 0.5
     eye=$(awk 'BEGIN { t = atan2(1, 1); printf "(%.17g,%.17g,%.17g)", -sqrt(68) * sin(t), -8 * cos(t), 1 + 2 * cos(t) }')
     (cd "$tmp" && printf '%s\nipd = 0\neye = %s\nup = (0,2,8)\nframes = f3\nrefresh\n' "$scene" "$eye" | "$vroc" 2>"$tmp/ref.err")
@@ -119,6 +119,12 @@ if [ -n "$id" ]; then
     # edge pixels (the eye agrees to rounding, 1e-15 m)
     if [ "$moved" -gt 10000 ] && [ "$off" -lt 200 ]; then pass
     else fail "trackball: drag changed $moved bytes, differs from the formula's view in $off"; fi
+    # the dragged view is the settings' eye, look and up (not the window's
+    # own): `save` holds it, and a fresh vroc reading the save draws the
+    # same frame (SPEC 11)
+    (cd "$tmp" && printf 'read drag.vroc\nframes = f4\nrefresh\n' | "$vroc" 2>"$tmp/drag.err")
+    if [ ! -s "$tmp/drag.err" ] && cmp -s "$tmp/f2/frame-000000-left.ppm" "$tmp/f4/frame-000000-left.ppm"; then pass
+    else fail "trackball: the saved view draws another frame: $(head -c 200 "$tmp/drag.err")"; fi
 fi
 
 # ---- 3. the prompt answers while the window runs; space runs time ----------
