@@ -111,6 +111,8 @@ const Command sh_commands[] = {
      K_TEXT, R_ANY, 0, VR_PATH_MAX - 1, 1, NULL, T_NONE, 0, 0, run_sound_log},
     {"trackers", "trackers = URL", "take live head and hand samples from LCM at URL (empty: stop)", "none", G_EXT, F_ASSIGN,
      K_WORD, R_ANY, 0, 255, 1, NULL, T_NONE, 0, 0, run_trackers},
+    SETTING("select", "select = 0|1", "1: the hand's trigger grabs and throws objects; 0: it flies", "0", G_EXT, K_INT, R_CLOSED, 0, 1, select),
+    SETTING("panel", "panel = 0|1", "1: the virtual tool panel is drawn and the hand works it (show panel)", "0", G_EXT, K_INT, R_CLOSED, 0, 1, panel),
     VERB("track", "track FILE", "play a track file (head and hand samples) from now, in simulation time", G_EXT, F_PATH, R_ANY, 0, 0, run_track),
 
     VIEW("resolution", "resolution = (w,h)", "frame size, pixels", "(640,512)", K_IVEC2, R_CLOSED, 16, 8192, width),
