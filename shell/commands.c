@@ -89,7 +89,7 @@ const Command sh_commands[] = {
     VERB("state", "state WORD ...", "a saved file's line: one piece of a run's state (written by save)", G_EXT, F_PATH, R_ANY, 0, 0, run_state),
     VERB("dump", "dump", "print every object's state (one CSV line each, by name)", G_EXT, F_BARE, R_ANY, 0, 0, run_dump),
     VERB("stats", "stats", "print the statistics (one line of key=value)", G_EXT, F_BARE, R_ANY, 0, 0, run_stats),
-    VERB("show", "show NAME", "print the attributes of object NAME", G_EXT, F_NAME, R_ANY, 0, 0, run_show),
+    VERB("show", "show NAME", "print the attributes of object NAME (show head, hand, panel: the trackers, the tool panel)", G_EXT, F_NAME, R_ANY, 0, 0, run_show),
     VERB("delete", "delete NAME", "remove object NAME", G_EXT, F_NAME, R_ANY, 0, 0, run_delete),
     {"frames", "frames = DIR", "write each frame's image pair into DIR (empty: stop writing)", "frames", G_EXT, F_ASSIGN,
      K_TEXT, R_ANY, 0, VR_PATH_MAX - 1, 1, NULL, T_NONE, 0, 0, run_frames},
