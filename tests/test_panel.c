@@ -208,6 +208,45 @@ static int test_a_slider_value_the_settings_refuse_is_a_clear_error(void)
     return 0;
 }
 
+/* more presses between two reads than the queue holds keep the first ones */
+static int test_presses_beyond_the_queue_keep_the_first_32(void)
+{
+    vrWorld *w = panel_world(1);
+    vrPanelControl req[VR_PANEL_REQUESTS_MAX + 8];
+    int k;
+    for (k = 0; k < VR_PANEL_REQUESTS_MAX; k++) ENSURE(click(w, 0.02 * k, control(w, VR_PANEL_STEP)) == 1);
+    for (k = 0; k < 8; k++) ENSURE(click(w, 0.7 + 0.02 * k, control(w, VR_PANEL_STOP)) == 1);
+    ENSURE(vrWorld_PanelRequests(w, req, VR_PANEL_REQUESTS_MAX + 8) == VR_PANEL_REQUESTS_MAX);
+    for (k = 0; k < VR_PANEL_REQUESTS_MAX; k++) ENSURE(req[k] == VR_PANEL_STEP);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+/* restart lets go of what the trigger held and forgets presses and moved
+ * knobs not yet taken; the sheet stays where the hand put it */
+static int test_restart_lets_go_and_forgets_presses_but_keeps_the_sheet(void)
+{
+    vrWorld *w = panel_world(1);
+    vec3 on_sheet = vec3_add(control(w, VR_PANEL_PLAY), sheet_axis(w, vec3_make(0, -0.15, 0)));
+    vec3 moved_to = vec3_add(on_sheet, vec3_make(0.3, 0.2, 0.5)), stop;
+    vrTrackerSample down, moved;
+    vrPanelControl req[4];
+    ENSURE(click(w, 0.01, control(w, VR_PANEL_STOP)) == 1);
+    drag_knob(w, VR_PANEL_TIME_STEP, 0.02, 0.1);
+    down = hand_at(w, 0.05, on_sheet, quat_identity(), VR_BUTTON_TRIGGER);
+    ENSURE(vrPanel_TriggerDown(w, &down) == 1);
+    moved = hand_at(w, 0.06, moved_to, quat_identity(), VR_BUTTON_TRIGGER);
+    vrPanel_HandMoved(w, &moved);
+    stop = control(w, VR_PANEL_STOP);
+    vrWorld_Restart(w);
+    ENSURE(!vrPanel_Holds(w) && vrWorld_PanelRequests(w, req, 4) == 0);
+    ENSURE(vec3_dist(control(w, VR_PANEL_STOP), stop) == 0);
+    ENSURE(vrScene_Step(w, 1) == 0);
+    ENSURE(vrWorld_Settings(w)->time_step == 0.1 && vrWorld_Time(w) == 0.1);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
 /* ---- the sheet -------------------------------------------------------------------- */
 /* taken on the sheet away from the controls, the hand turned and moved:
  * every control c goes to p1 + R(q1 q0^-1) (c - p0) */
@@ -354,6 +393,8 @@ static const vrTest tests[] = {
     TEST(test_collision_dist_slider_moved_by_d_sets_1mm_times_2000_to_the_place),
     TEST(test_knobs_stop_at_their_lines_ends),
     TEST(test_a_slider_value_the_settings_refuse_is_a_clear_error),
+    TEST(test_presses_beyond_the_queue_keep_the_first_32),
+    TEST(test_restart_lets_go_and_forgets_presses_but_keeps_the_sheet),
     TEST(test_sheet_taken_follows_the_hand_rigidly_and_turns_with_it),
     TEST(test_panel_is_never_in_dump_or_stats),
     TEST(test_ball_dropped_through_the_panel_falls_as_if_it_were_not_there),
