@@ -102,6 +102,8 @@ typedef struct vrSettings {
     double default_elasticity;/* 0..1, 1: the elasticity objects created after it start with */
     double contact_step;      /* > 0 .. 0.1 s, 1/240: the longest step between island steps (SPEC 7) */
     double sound_min_speed;   /* >= 0, 0.5 m/s: the slowest impact that sounds (SPEC 8) */
+    int select;               /* 0|1, 0: the hand's trigger grabs objects (1) or flies (0) (SPEC 8) */
+    int panel;                /* 0|1, 0: the virtual tool panel is drawn and takes the trigger (SPEC 8) */
 } vrSettings;
 
 vrSettings vrSettings_Default(void);
@@ -333,6 +335,31 @@ int vrTrackers_WaitFirst(vrTrackers *tr, double deadline);
 long long vrTrackers_Refused(const vrTrackers *tr);
 /* publishes sound events on VROC_SOUND (vroc.sound_t) */
 int vrTrackers_PublishSounds(vrTrackers *tr, const vrSoundEvent *ev, int n, const char *sound);
+/* ---- the virtual tool panel (SPEC 8, thesis A.1) ---------------------- */
+/* Its controls, in `show panel`'s order: the four buttons, then the two
+ * sliders.  The panel is a 45 x 25 cm sheet in the world, worked by the
+ * hand's trigger (src/panel.c; man vroc, TOOL PANEL). */
+typedef enum vrPanelControl {
+    VR_PANEL_STOP, VR_PANEL_PLAY, VR_PANEL_STEP, VR_PANEL_SELECT,
+    VR_PANEL_TIME_STEP, VR_PANEL_COLLISION_DIST, VR_PANEL_CONTROLS
+} vrPanelControl;
+#define VR_PANEL_REQUESTS_MAX 32   /* button presses kept between two reads */
+/* "stop", "play", "step", "select", "time_step", "collision_dist" */
+const char *vrPanel_ControlName(vrPanelControl c);
+/* a control's centre in world coordinates (a slider's: its knob's, where
+ * a held knob is, else where its setting puts it); -1 for no control */
+int vrWorld_PanelControl(const vrWorld *w, vrPanelControl c, double centre[3]);
+/* the sheet's pose: its centre and the unit quaternion (w, x, y, z) from
+ * its frame (x along the 45 cm, y up the 25 cm, z its front's normal) to
+ * the world's */
+void vrWorld_PanelPose(const vrWorld *w, double position[3], double orientation[4]);
+/* Takes the stop, play and step presses since the last call, oldest
+ * first, at most max; returns their count.  The library only records
+ * them: time runs where its caller runs frames (the shell's start, stop,
+ * step), so the caller acts on them after each frame.  (select acts at
+ * once; the sliders at the next frame boundary, in vrWorld_Step.) */
+int vrWorld_PanelRequests(vrWorld *w, vrPanelControl *out, int max);
+
 /* ---- the live window (SPEC 9): GLFW, loaded on first use ------------- */
 /* The window shows a display's last render: mono (the left image of a view
  * rendered with ipd 0), side (left | right) or anaglyph (red from the left

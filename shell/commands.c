@@ -89,7 +89,7 @@ const Command sh_commands[] = {
     VERB("state", "state WORD ...", "a saved file's line: one piece of a run's state (written by save)", G_EXT, F_PATH, R_ANY, 0, 0, run_state),
     VERB("dump", "dump", "print every object's state (one CSV line each, by name)", G_EXT, F_BARE, R_ANY, 0, 0, run_dump),
     VERB("stats", "stats", "print the statistics (one line of key=value)", G_EXT, F_BARE, R_ANY, 0, 0, run_stats),
-    VERB("show", "show NAME", "print the attributes of object NAME", G_EXT, F_NAME, R_ANY, 0, 0, run_show),
+    VERB("show", "show NAME", "print the attributes of object NAME (show head, hand, panel: the trackers, the tool panel)", G_EXT, F_NAME, R_ANY, 0, 0, run_show),
     VERB("delete", "delete NAME", "remove object NAME", G_EXT, F_NAME, R_ANY, 0, 0, run_delete),
     {"frames", "frames = DIR", "write each frame's image pair into DIR (empty: stop writing)", "frames", G_EXT, F_ASSIGN,
      K_TEXT, R_ANY, 0, VR_PATH_MAX - 1, 1, NULL, T_NONE, 0, 0, run_frames},
@@ -111,6 +111,8 @@ const Command sh_commands[] = {
      K_TEXT, R_ANY, 0, VR_PATH_MAX - 1, 1, NULL, T_NONE, 0, 0, run_sound_log},
     {"trackers", "trackers = URL", "take live head and hand samples from LCM at URL (empty: stop)", "none", G_EXT, F_ASSIGN,
      K_WORD, R_ANY, 0, 255, 1, NULL, T_NONE, 0, 0, run_trackers},
+    SETTING("select", "select = 0|1", "1: the hand's trigger grabs and throws objects; 0: it flies", "0", G_EXT, K_INT, R_CLOSED, 0, 1, select),
+    SETTING("panel", "panel = 0|1", "1: the virtual tool panel is drawn and the hand works it (show panel)", "0", G_EXT, K_INT, R_CLOSED, 0, 1, panel),
     VERB("track", "track FILE", "play a track file (head and hand samples) from now, in simulation time", G_EXT, F_PATH, R_ANY, 0, 0, run_track),
 
     VIEW("resolution", "resolution = (w,h)", "frame size, pixels", "(640,512)", K_IVEC2, R_CLOSED, 16, 8192, width),

@@ -26,6 +26,10 @@ int run_object(Shell *sh, const Stmt *st, char *err, size_t n)
     vrObjectId id = vrWorld_FindObject(sh->world, st->name);
     vrObjectType want = type_of_command(st->cmd);
     vrObjectDef d;
+    if (id == VR_NO_OBJECT && sh_reserved_name(st->name)) {
+        snprintf(err, n, "'%s' is a reserved word (show %s prints the tool panel), not an object name", st->name, st->name);
+        return -1;
+    }
     if (id == VR_NO_OBJECT) {
         if (vrWorld_CreateObject(sh->world, st->name, want, &id, err, n) != 0) return -1;
     } else if (vrWorld_GetObjectDef(sh->world, id, &d) == 0 && d.type != want)
@@ -152,7 +156,7 @@ int run_show(Shell *sh, const Stmt *st, char *err, size_t n)
     vrObjectId id = vrWorld_FindObject(sh->world, st->name);
     vrObjectDef d;
     int i;
-    if (sh_show_tracker(sh, st->name)) return 0;   /* head, hand: reserved (SPEC 8) */
+    if (sh_show_tracker(sh, st->name) || sh_show_panel(sh, st->name)) return 0;   /* head, hand, panel: reserved (SPEC 8) */
     if (id == VR_NO_OBJECT || vrWorld_GetObjectDef(sh->world, id, &d) != 0) return no_such_object(sh, st->name, err, n);
     printf("name = %s\ntype = %s\n", st->name, type_names[d.type]);
     for (i = 0; i < sh_ncommands; i++) {

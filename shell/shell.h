@@ -114,4 +114,18 @@ void sh_window_close(Shell *sh);
 /* simulate.c: a real-time run (the prompt's `start`, the window's space key) */
 int sh_run_realtime(Shell *sh, char *err, size_t n);
 
+/* panel.c: the virtual tool panel (SPEC 8) */
+/* the frames a command still runs: `step n` counts down; a `start`
+ * (until_rest) also ends when everything rests */
+typedef struct ShRun {
+    long left;
+    int until_rest;
+} ShRun;
+/* after a frame: the panel's stop, play and step presses change the run */
+void sh_panel_requests(Shell *sh, ShRun *run);
+/* `show panel`: 1 when name is `panel` (printed) */
+int sh_show_panel(Shell *sh, const char *name);
+/* `panel` is a reserved word for show, not an object name */
+int sh_reserved_name(const char *name);
+
 #endif

@@ -56,12 +56,18 @@ static int interrupted(long done, long of, char *err, size_t n)
     return 1;
 }
 
+/* frames, one at a time, as long as the run has some left; the tool
+ * panel's presses after each may end it, lengthen it or make it a start */
 static int advance(Shell *sh, long frames, int until_rest, char *err, size_t n)
 {
-    long i;
-    for (i = 0; i < frames; i++) {
-        if (until_rest && vrWorld_AllAtRest(sh->world)) break;
-        if (interrupted(i, frames, err, n) || one_frame(sh, err, n) != 0) return -1;
+    ShRun run;
+    long done = 0;
+    run.left = frames, run.until_rest = until_rest;
+    while (run.left > 0) {
+        if (run.until_rest && vrWorld_AllAtRest(sh->world)) break;
+        if (interrupted(done, frames, err, n) || one_frame(sh, err, n) != 0) return -1;
+        done++, run.left--;
+        sh_panel_requests(sh, &run);
     }
     return 0;
 }
@@ -128,10 +134,14 @@ double sh_frame_wait(const Shell *sh)
 int sh_tick(Shell *sh, char *err, size_t n)
 {
     double now;
+    ShRun run;
+    run.left = 0, run.until_rest = 0;
     if (one_frame(sh, err, n) != 0) {
         sh->running = 0;
         return -1;
     }
+    sh_panel_requests(sh, &run);   /* the panel's step: one frame more, time stopped */
+    if (run.left > 0 && advance(sh, run.left, 0, err, n) != 0) return -1;
     now = now_s();
     sh->next_frame += frame_period(sh);
     if (sh->next_frame < now) sh->next_frame = now;   /* late: go on, do not burst to catch up */

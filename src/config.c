@@ -120,6 +120,8 @@ int vrSettings_Check(const vrSettings *s, char *err, size_t n)
         return out_of_range(err, n, "default_elasticity", "0..1", s->default_elasticity);
     if (bad_range(s->sound_min_speed, 0, VR_SPEED_MAX, 0))
         return out_of_range(err, n, "sound_min_speed", "0..1e6 m/s", s->sound_min_speed);
+    if (s->select != 0 && s->select != 1) return out_of_range(err, n, "select", "0 or 1", s->select);
+    if (s->panel != 0 && s->panel != 1) return out_of_range(err, n, "panel", "0 or 1", s->panel);
     return 0;
 }
 

@@ -22,6 +22,7 @@
 #include "render.h"
 #include "image.h"
 #include "module.h"
+#include "panel_draw.h"
 
 #define MODULE_FILE "vroc-render.so"
 #define RES_MIN 16
@@ -35,6 +36,7 @@ struct vrDisplay {
     vrRenderObject *objects;   /* scratch for the scene handed to the module */
     int objects_cap;
     vrObjectId *ids;
+    vrPanelParts panel;        /* the tool panel's boxes (SPEC 8), drawn after the objects */
 };
 
 /* ---- the module ---------------------------------------------------------- */
@@ -246,7 +248,7 @@ static int gather_scene(vrDisplay *d, vrWorld *w, int see_through, vrRenderFrame
                         char *err, size_t errlen)
 {
     int n = vrWorld_ObjectCount(w), i;
-    if (reserve_objects(d, n > 0 ? n : 1)) {
+    if (reserve_objects(d, n + VR_PANEL_PARTS)) {
         vrRender_Error(err, errlen, "out of memory for %d objects", n);
         return -1;
     }
@@ -256,7 +258,7 @@ static int gather_scene(vrDisplay *d, vrWorld *w, int see_through, vrRenderFrame
             vrRender_Error(err, errlen, "cannot draw object '%s'", vrWorld_ObjectName(w, d->ids[i]));
             return -1;
         }
-    fr->nobjects = n;
+    fr->nobjects = n + vrPanelDraw_Parts(w, &d->panel, d->objects + n);
     fr->objects = d->objects;
     return 0;
 }

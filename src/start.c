@@ -118,8 +118,34 @@ int vrWorld_GoLive(vrWorld *w, char *err, size_t n)
     return vrSave_Resume(w) == 0 ? 0 : vrGeom_Fail(err, n, "out of memory");
 }
 
+int vrWorld_TakeSettings(vrWorld *w, const vrSettings *s, char *err, size_t n)
+{
+    if (vrSettings_Check(s, err, n) != 0) return -1;
+    w->params_dirty |= vrSettings_Changes(&w->s, s);
+    if (s->time_step != w->s.time_step) {
+        w->t_base = w->t;
+        w->frames_base = w->frames;
+    }
+    if (s->seed != w->s.seed) vrSplitmix_Seed(&w->rng, s->seed);
+    w->s = *s;
+    return 0;
+}
+
+/* SPEC 8: a slider moved in the last frame sets its value here, at the
+ * frame boundary, as the same statement typed between frames would; a
+ * value the other settings refuse (internal_step too fine for the new
+ * time_step) is an error naming the slider, and the knob goes back */
+static int take_panel(vrWorld *w, char *err, size_t n)
+{
+    vrSettings s;
+    char why[400];
+    if (!vrPanel_TakeSettings(w, &s) || vrWorld_TakeSettings(w, &s, why, sizeof why) == 0) return 0;
+    return vrGeom_Fail(err, n, "the tool panel's slider: %s", why);
+}
+
 int vrWorld_Start(vrWorld *w, char *err, size_t n)
 {
+    if (take_panel(w, err, n) != 0) return -1;
     if (vrWorld_GoLive(w, err, n) != 0) return -1;
     if (w->params_dirty && apply_params(w) != 0) return vrGeom_Fail(err, n, "out of memory");
     if (vrOwners_Choose(w, err, n) != 0) return -1;

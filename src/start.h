@@ -15,5 +15,8 @@ int vrWorld_MakeLive(vrWorld *w, char *err, size_t n);
 int vrWorld_GoLive(vrWorld *w, char *err, size_t n);
 /* the live dynamic bodies again, after objects joined or left */
 int vrWorld_ListDynamic(vrWorld *w);
+/* vrWorld_SetSettings: checked whole, then kept for the next frame; here
+ * because a start takes the tool panel's sliders through it too */
+int vrWorld_TakeSettings(vrWorld *w, const vrSettings *s, char *err, size_t n);
 
 #endif

@@ -10,6 +10,7 @@
 #include "resume.h"
 #include "parallel/spawn.h"
 #include "tracker.h"
+#include "start.h"
 
 vrWorld *vrWorld_Create(void)
 {
@@ -20,6 +21,7 @@ vrWorld *vrWorld_Create(void)
     vrUpdate_Init(&w->update);
     vrUpdate_Init(&w->pending);
     vrSplitmix_Seed(&w->rng, w->s.seed);
+    vrPanel_Init(&w->panel);
     return w;
 }
 
@@ -71,6 +73,7 @@ void vrWorld_Restart(vrWorld *w)
     vrWorld_ClearTracker(w, VR_DEVICE_HEAD);   /* track time was time since `track` */
     vrWorld_ClearTracker(w, VR_DEVICE_HAND);
     vrSounds_Clear(&w->sounds);
+    vrPanel_Restart(&w->panel);
     vrSplitmix_Seed(&w->rng, w->s.seed);
     vrSave_Free(w);
     w->warm.n = 0;
@@ -80,15 +83,7 @@ const vrSettings *vrWorld_Settings(const vrWorld *w) { return &w->s; }
 
 int vrWorld_SetSettings(vrWorld *w, const vrSettings *s, char *err, size_t n)
 {
-    if (vrSettings_Check(s, err, n) != 0) return -1;
-    w->params_dirty |= vrSettings_Changes(&w->s, s);
-    if (s->time_step != w->s.time_step) {
-        w->t_base = w->t;
-        w->frames_base = w->frames;
-    }
-    if (s->seed != w->s.seed) vrSplitmix_Seed(&w->rng, s->seed);
-    w->s = *s;
-    return 0;
+    return vrWorld_TakeSettings(w, s, err, n);
 }
 
 /* ---- objects by name and id ------------------------------------------------------------ */

@@ -22,6 +22,7 @@
 
 #include "vroc.h"
 #include "owner.h"
+#include "panel.h"
 #include "reach.h"
 #include "splitmix.h"
 #include "table.h"
@@ -69,6 +70,7 @@ struct vrWorld {
     double frame_ms, sim_ms, render_ms;
     vrSounds sounds;         /* this frame's collision sounds (sound.c, SPEC 8) */
     vrTrack track[2];        /* the head and the hand, by vrDevice (tracker.c, SPEC 8) */
+    vrPanel panel;           /* the virtual tool panel (panel.c, SPEC 8) */
     /* `random` */
     int random_next;
     vrSplitmix rng;
