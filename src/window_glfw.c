@@ -101,8 +101,10 @@ static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods)
     if (action == GLFW_PRESS && k) push(w, VR_WEV_KEY, 0, k, 0);
 }
 
-/* a size that is not the one show() asked for is the user's: from then on
- * the window keeps it and the shell draws for it */
+/* a size that is not the one show() asked for is the user's (or a window
+ * manager's that refused ours): from then on the window keeps it and the
+ * shell draws for it.  On X11 the framebuffer's pixels are the pointer's
+ * coordinates, so the shell measures both alike. */
 static void on_framebuffer(GLFWwindow *w, int width, int height)
 {
     vrWindowContext *c = glfwGetWindowUserPointer(w);

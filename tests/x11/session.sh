@@ -75,10 +75,19 @@ window_id() {
 # bytes that differ between two equal-sized PPMs
 differ() { cmp -l "$1" "$2" 2>/dev/null | wc -l; }
 
-drag_right() { # drag_right ID: press at (320,256), 10 x 8 pixels every 20 ms, release
-    moves="mousemove --window $1 320 256 sleep 0.1 mousedown 1 sleep 0.05"
+# drag_right ID: press at (320,256), 10 x 8 pixels every 20 ms, the release
+# at once after the last (a throw, not a stop and a drop)
+drag_right() {
+    moves="mousemove --window $1 320 256 sleep 0.1 mousedown 1"
     x=320
-    for k in 1 2 3 4 5 6 7 8 9 10; do x=$((x + 8)); moves="$moves mousemove --window $1 $x 256 sleep 0.02"; done
+    for k in 1 2 3 4 5 6 7 8 9 10; do x=$((x + 8)); moves="$moves sleep 0.02 mousemove --window $1 $x 256"; done
     # shellcheck disable=SC2086
     xdotool $moves mouseup 1
+}
+# retry CMD...: CMD until it succeeds, up to 5 s (the X server and the
+# window's service take their time on a loaded machine)
+retry() {
+    i=0
+    while [ $i -lt 25 ]; do "$@" && return 0; sleep 0.2; i=$((i + 1)); done
+    return 1
 }
