@@ -52,13 +52,13 @@ static int push(ShHand *h, vrWorld *w, const double p[3], double t, unsigned but
     vrTrackerSample s = {0, {0, 0, 0}, {1, 0, 0, 0}, 0};
     s.t = t, s.buttons = buttons;
     memcpy(s.position, p, sizeof s.position);
-    if (h->log) {
-        fprintf(h->log, "%.17g hand %.17g %.17g %.17g 1 0 0 0 %u\n", t, p[0], p[1], p[2], buttons);
-        fflush(h->log);
-    }
     if (vrWorld_PushSample(w, VR_DEVICE_HAND, &s, h->error, sizeof h->error) != 0) return -1;
     h->pushed = 1;
     h->last_t = t;
+    if (h->log) {   /* what the world took, not what it refused */
+        fprintf(h->log, "%.17g hand %.17g %.17g %.17g 1 0 0 0 %u\n", t, p[0], p[1], p[2], buttons);
+        fflush(h->log);
+    }
     return 0;
 }
 
