@@ -371,12 +371,14 @@ typedef enum vrWindowEventType {
     VR_WEV_MOTION,                  /* the pointer moved */
     VR_WEV_SCROLL,                  /* the wheel: amount > 0 away from the user */
     VR_WEV_KEY,                     /* a key went down: key is ASCII, lower case; 27 Esc */
-    VR_WEV_CLOSE                    /* the window manager's close button */
+    VR_WEV_CLOSE,                   /* the window manager's close button */
+    VR_WEV_RESIZE                   /* the window's size changed: width x height */
 } vrWindowEventType;
 typedef struct vrWindowEvent {
     vrWindowEventType type;
     double x, y;                    /* the pointer, pixels from the top left */
     int button, key;
+    int width, height;              /* VR_WEV_RESIZE: the new size, pixels */
     double amount;
     double time;                    /* monotonic seconds when it was taken */
 } vrWindowEvent;
@@ -384,8 +386,13 @@ typedef struct vrWindow vrWindow;
 /* fails with a clear message when $DISPLAY is unset or no X server answers */
 int vrWindow_Open(vrWindow **out, char *err, size_t errlen);
 void vrWindow_Close(vrWindow *win);
-/* shows d's last render in mode (the window takes its size from it) */
+/* shows d's last render in mode: the window takes its size from it until
+ * the user resizes the window; from then on the window keeps the user's
+ * size and the image is drawn at its top left (draw it at vrWindow_Size) */
 int vrWindow_Show(vrWindow *win, const vrDisplay *d, vrWindowMode mode, char *err, size_t errlen);
+/* the window's size in pixels; 1 when the user (or the window manager)
+ * chose it, 0 while it follows the images shown */
+int vrWindow_Size(const vrWindow *win, int *width, int *height);
 /* the events since the last call, at most max; never blocks */
 int vrWindow_Poll(vrWindow *win, vrWindowEvent *ev, int max);
 

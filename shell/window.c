@@ -3,8 +3,9 @@
  *   run_window, run_window_mode   the command and the setting
  *   sh_window_service             the window's input, and the frame shown
  *   sh_wait_input                 a wait for input that keeps it live
+ *   window_view                   the view as the window draws it (its size)
  *   on_key, on_press, on_motion   what the mouse and the keys do
- *   hand_*                        the mouse as the hand (select mode)
+ *   hand_clock                    the pointer's moments in simulation time
  *
  * The window has a display of its own (the view with ipd 0 in mono), so
  * the frames written keep the shell's view and size.  A trackball drag and
@@ -12,17 +13,24 @@
  * a later `eye =`, follow the window.  The window is serviced at every
  * frame drawn, and whenever the shell waits for input (the prompt, a pipe),
  * at least every SERVICE_S seconds.
+ *
+ * The window opens at the frames' resolution (twice as wide side by
+ * side) and follows it until the user resizes it; from then on it is
+ * drawn for its own size: the view rendered at that size (each eye at
+ * half its width side by side), so nothing is stretched, and the pointer
+ * and the trackball measure in its pixels.
  */
 #include <poll.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include "commands.h"
 #include "hand.h"
 
 #define SERVICE_S 0.01          /* the window's input is read this often, at least */
 #define EVENTS_MAX 64
+#define WIN_MIN 16              /* pixels: the render's least (a window made smaller is clipped) */
+#define WIN_MAX 8192
 
 typedef struct ShWindow {
     vrWindow *win;
@@ -32,21 +40,30 @@ typedef struct ShWindow {
     double last_x, last_y;
     int select;                 /* the mouse is the hand (key g) */
     ShHand hand;
+    int hand_reported;          /* the world refused a sample of this drag: said once */
 } ShWindow;
 
-static double now_s(void)
+/* ---- the frame shown ------------------------------------------------------- */
+static int clamp_size(int v) { return v < WIN_MIN ? WIN_MIN : v > WIN_MAX ? WIN_MAX : v; }
+
+/* the view the window draws: the tracked head's, when one drives the view,
+ * at the size the user gave the window (one eye's: half of it side by side) */
+static vrView window_view(const Shell *sh)
 {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+    vrView v = sh_current_view(sh);
+    int width, height;
+    if (sh->window_mode == VR_WINDOW_MONO) v.ipd = 0;   /* the head's own view */
+    if (vrWindow_Size(sh->window->win, &width, &height)) {
+        v.width = clamp_size(sh->window_mode == VR_WINDOW_SIDE ? width / 2 : width);
+        v.height = clamp_size(height);
+    }
+    return v;
 }
 
-/* ---- the frame shown ------------------------------------------------------- */
 static int show(Shell *sh, char *err, size_t n)
 {
     ShWindow *w = sh->window;
-    vrView v = sh_current_view(sh);   /* the tracked head, when one drives the view */
-    if (sh->window_mode == VR_WINDOW_MONO) v.ipd = 0;   /* the head's own view */
+    vrView v = window_view(sh);
     if (vrDisplay_Render(w->display, sh->world, &v, err, n) != 0) return -1;
     w->dirty = 0;
     return vrWindow_Show(w->win, w->display, sh->window_mode, err, n);
@@ -100,6 +117,8 @@ static void on_key(Shell *sh, int key)
     case 't': sh->view.see_through = (sh->view.see_through + 1) % 3; break;
     case 'm': sh->window_mode = (vrWindowMode)((sh->window_mode + 1) % 3); break;
     case 'r': reset_view(sh); break;
+    /* TODO(grab merge): set the library's `select` setting (src/config.c)
+     * instead of this flag, so that `select = 1` and the panel agree */
     case 'g': w->select = !w->select; break;
     case 27: sh_window_close(sh); return;
     default: return;
@@ -108,23 +127,54 @@ static void on_key(Shell *sh, int key)
 }
 
 /* ---- the mouse ---------------------------------------------------------------- */
-/* the pointer's ray, in the mono view; in side mode, over either eye's half */
-static void pointer_ray(const Shell *sh, double x, double y, double o[3], double d[3])
+/* the pointer's ray in the view the window shows; side by side, over
+ * either eye's half; forward f: the ray through the centre */
+static void pointer_ray(const Shell *sh, double x, double y, double o[3], double d[3], double f[3])
 {
-    int w = sh->view.width;
-    if (sh->window_mode == VR_WINDOW_SIDE && x >= w) x -= w;
-    vrView_PointerRay(&sh->view, x + 0.5, y + 0.5, w, sh->view.height, o, d);
+    vrView v = window_view(sh);
+    double c[3];
+    if (sh->window_mode == VR_WINDOW_SIDE && x >= v.width) x -= v.width;
+    vrView_PointerRay(&v, x + 0.5, y + 0.5, v.width, v.height, o, d);
+    vrView_PointerRay(&v, v.width / 2.0, v.height / 2.0, v.width, v.height, c, f);
+}
+
+/* the pointer's moments in simulation time (hand.h): in a real-time run
+ * the next frame, due at sh->next_frame, ends at the next frame end, and
+ * time runs at one simulated second a second between the frames; else
+ * what the pointer does happens in the frame to come, at its end */
+static HandClock hand_clock(const Shell *sh)
+{
+    HandClock c;
+    c.now = vrWorld_Time(sh->world);
+    c.next = vrWorld_NextFrameEnd(sh->world);
+    c.wall_next = sh->next_frame;
+    c.rate = sh->running ? 1 : 0;
+    return c;
+}
+
+/* a hand call's result: a refused sample is said once a drag */
+static void hand_result(Shell *sh, int r)
+{
+    ShWindow *w = sh->window;
+    if (r >= 0 || w->hand_reported) return;
+    w->hand_reported = 1;
+    report(sh, w->hand.error);
 }
 
 static void on_press(Shell *sh, const vrWindowEvent *e)
 {
     ShWindow *w = sh->window;
+    HandClock c = hand_clock(sh);
     double o[3], d[3], f[3];
+    int r;
     if (e->button != 1) return;
-    pointer_ray(sh, e->x, e->y, o, d);
-    vrView_PointerRay(&sh->view, sh->view.width / 2.0, sh->view.height / 2.0, sh->view.width,
-                      sh->view.height, o, f);    /* the view's forward direction */
-    if (w->select && hand_press(&w->hand, sh->world, o, d, f, e->time)) return;
+    pointer_ray(sh, e->x, e->y, o, d, f);
+    if (w->select) {
+        w->hand_reported = 0;
+        r = hand_press(&w->hand, sh->world, o, d, f, &c, e->time);
+        hand_result(sh, r);
+        if (r != 0) return;
+    }
     w->dragging = 1;
     w->last_x = e->x, w->last_y = e->y;
 }
@@ -132,12 +182,15 @@ static void on_press(Shell *sh, const vrWindowEvent *e)
 static void on_motion(Shell *sh, const vrWindowEvent *e)
 {
     ShWindow *w = sh->window;
-    double o[3], d[3];
+    HandClock c = hand_clock(sh);
+    double o[3], d[3], f[3], k;
     if (w->hand.held) {
-        pointer_ray(sh, e->x, e->y, o, d);
-        hand_move(&w->hand, o, d, e->time);
+        pointer_ray(sh, e->x, e->y, o, d, f);
+        hand_result(sh, hand_move(&w->hand, sh->world, o, d, &c, e->time));
     } else if (w->dragging) {
-        vrView_Trackball(&sh->view, e->x - w->last_x, e->y - w->last_y);
+        /* half a turn per height of the window as drawn, not of the frames */
+        k = (double)sh->view.height / window_view(sh).height;
+        vrView_Trackball(&sh->view, k * (e->x - w->last_x), k * (e->y - w->last_y));
         w->last_x = e->x, w->last_y = e->y;
         w->dirty = 1;
     }
@@ -146,11 +199,12 @@ static void on_motion(Shell *sh, const vrWindowEvent *e)
 static void on_release(Shell *sh, const vrWindowEvent *e)
 {
     ShWindow *w = sh->window;
-    double o[3], d[3];
+    HandClock c = hand_clock(sh);
+    double o[3], d[3], f[3];
     if (e->button != 1) return;
     if (w->hand.held) {
-        pointer_ray(sh, e->x, e->y, o, d);
-        hand_release(&w->hand, o, d, e->time);
+        pointer_ray(sh, e->x, e->y, o, d, f);
+        hand_result(sh, hand_release(&w->hand, sh->world, o, d, &c, e->time));
     }
     w->dragging = 0;
 }
@@ -167,6 +221,7 @@ static void on_event(Shell *sh, const vrWindowEvent *e)
         break;
     case VR_WEV_KEY: on_key(sh, e->key); break;
     case VR_WEV_CLOSE: sh_window_close(sh); break;
+    case VR_WEV_RESIZE: sh->window->dirty = 1; break;
     }
 }
 
@@ -234,7 +289,7 @@ int run_window(Shell *sh, const Stmt *st, char *err, size_t n)
             free(w);
             return -1;
         }
-        hand_init(&w->hand, now_s());
+        hand_init(&w->hand);
         sh->window = w;
     }
     sh->window->dirty = 1;

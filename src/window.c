@@ -2,6 +2,7 @@
  *
  *   vrWindow_Open    checks $DISPLAY, loads vroc-window.so (module.h)
  *   vrWindow_Show    composes a display's two eyes for the mode (compose)
+ *   vrWindow_Size    its size, and whether the user chose it
  *   vrWindow_Poll    the window's input events
  *
  * Nothing here references GLFW or X: a run that never opens a window never
@@ -116,6 +117,11 @@ int vrWindow_Show(vrWindow *win, const vrDisplay *d, vrWindowMode mode, char *er
     }
     compose(l, r, w, h, mode, win->rgb);
     return win->api->show(win->ctx, win->rgb, ww, h, err, errlen);
+}
+
+int vrWindow_Size(const vrWindow *win, int *width, int *height)
+{
+    return win->api->size(win->ctx, width, height);
 }
 
 int vrWindow_Poll(vrWindow *win, vrWindowEvent *ev, int max)

@@ -23,6 +23,9 @@
 struct vrWindowContext {
     GLFWwindow *win;
     int width, height;                 /* the pixels last shown */
+    int fb_width, fb_height;           /* the window's, as the X server last told */
+    int asked_width, asked_height;     /* the size show() set: not the user's */
+    int user_sized;                    /* the user (or a window manager) gave another */
     const unsigned char *rgb;          /* they: the caller keeps them until the next show */
     vrWindowEvent queue[VR_WINDOW_QUEUE];
     int head, count;                   /* a ring: count events from head */
@@ -46,7 +49,7 @@ static double now_s(void)
 }
 
 /* ---- input --------------------------------------------------------------- */
-static void push(GLFWwindow *w, vrWindowEventType type, int button, int key, double amount)
+static vrWindowEvent *push(GLFWwindow *w, vrWindowEventType type, int button, int key, double amount)
 {
     vrWindowContext *c = glfwGetWindowUserPointer(w);
     vrWindowEvent *e;
@@ -59,6 +62,7 @@ static void push(GLFWwindow *w, vrWindowEventType type, int button, int key, dou
     e->type = type, e->button = button, e->key = key, e->amount = amount;
     glfwGetCursorPos(w, &e->x, &e->y);
     e->time = now_s();
+    return e;
 }
 
 static void on_button(GLFWwindow *w, int button, int action, int mods)
@@ -97,6 +101,20 @@ static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods)
     if (action == GLFW_PRESS && k) push(w, VR_WEV_KEY, 0, k, 0);
 }
 
+/* a size that is not the one show() asked for is the user's (or a window
+ * manager's that refused ours): from then on the window keeps it and the
+ * shell draws for it.  On X11 the framebuffer's pixels are the pointer's
+ * coordinates, so the shell measures both alike. */
+static void on_framebuffer(GLFWwindow *w, int width, int height)
+{
+    vrWindowContext *c = glfwGetWindowUserPointer(w);
+    vrWindowEvent *e;
+    c->fb_width = width, c->fb_height = height;
+    if (width != c->asked_width || height != c->asked_height) c->user_sized = 1;
+    e = push(w, VR_WEV_RESIZE, 0, 0, 0);
+    e->width = width, e->height = height;
+}
+
 static void on_close(GLFWwindow *w)
 {
     glfwSetWindowShouldClose(w, GLFW_FALSE);   /* the shell decides */
@@ -113,7 +131,7 @@ static vrWindowContext *open_window(int width, int height, const char *title, ch
         free(c);
         return NULL;
     }
-    glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);   /* its size is the frames' */
+    glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 2);
     c->win = glfwCreateWindow(width, height, title, NULL, NULL);
     if (!c->win) {
@@ -128,10 +146,13 @@ static vrWindowContext *open_window(int width, int height, const char *title, ch
     glfwSetKeyCallback(c->win, on_key);
     glfwSetWindowCloseCallback(c->win, on_close);
     glfwSetWindowRefreshCallback(c->win, on_refresh);
+    glfwSetFramebufferSizeCallback(c->win, on_framebuffer);
     glfwMakeContextCurrent(c->win);
     glfwSwapInterval(0);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     c->width = width, c->height = height;
+    c->asked_width = width, c->asked_height = height;
+    glfwGetFramebufferSize(c->win, &c->fb_width, &c->fb_height);
     return c;
 }
 
@@ -150,23 +171,27 @@ static void close_window(vrWindowContext *c)
 static void resize(vrWindowContext *c, int width, int height)
 {
     int w = 0, h = 0, i;
+    c->asked_width = width, c->asked_height = height;
     glfwSetWindowSize(c->win, width, height);
     for (i = 0; i < 100; i++) {
         glfwGetFramebufferSize(c->win, &w, &h);
         if (w == width && h == height) break;
         glfwWaitEventsTimeout(0.01);
     }
-    c->width = width, c->height = height;
+    c->fb_width = w, c->fb_height = h;
 }
 
+/* the pixels at the top left, black where they do not reach (a window the
+ * user made larger than them, until the shell draws for its size) */
 static void draw(vrWindowContext *c)
 {
-    int width = c->width, height = c->height;
-    glViewport(0, 0, width, height);
+    glViewport(0, 0, c->fb_width, c->fb_height);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
     /* rows top to bottom: start at the top left corner, draw downwards */
-    glWindowPos2i(0, height);
+    glWindowPos2i(0, c->fb_height);
     glPixelZoom(1, -1);
-    glDrawPixels(width, height, GL_RGB, GL_UNSIGNED_BYTE, c->rgb);
+    glDrawPixels(c->width, c->height, GL_RGB, GL_UNSIGNED_BYTE, c->rgb);
     glfwSwapBuffers(c->win);
 }
 
@@ -187,7 +212,8 @@ static int show(vrWindowContext *c, const unsigned char *rgb, int width, int hei
      * module drew, GLX must really bind again, not trust that it still is */
     glfwMakeContextCurrent(NULL);
     glfwMakeContextCurrent(c->win);
-    if (width != c->width || height != c->height) resize(c, width, height);
+    if (!c->user_sized && (width != c->fb_width || height != c->fb_height)) resize(c, width, height);
+    c->width = width, c->height = height;
     c->rgb = rgb;
     draw(c);
     if (glGetError() != GL_NO_ERROR) {
@@ -209,5 +235,11 @@ static int poll_events(vrWindowContext *c, vrWindowEvent *ev, int max)
     return n;
 }
 
+static int size(const vrWindowContext *c, int *width, int *height)
+{
+    *width = c->fb_width, *height = c->fb_height;
+    return c->user_sized;
+}
+
 /* the module's one export (window_module.h) */
-const vrWindowApi vroc_window_api = {VR_WINDOW_ABI, open_window, close_window, show, poll_events};
+const vrWindowApi vroc_window_api = {VR_WINDOW_ABI, open_window, close_window, show, poll_events, size};

@@ -10,7 +10,7 @@
 #include "vroc.h"
 
 #define VR_WINDOW_SYMBOL "vroc_window_api"
-#define VR_WINDOW_ABI 1
+#define VR_WINDOW_ABI 2            /* 2: resizable (size, and show's fit) */
 #define VR_WINDOW_QUEUE 256         /* events kept between two polls */
 
 typedef struct vrWindowContext vrWindowContext;
@@ -20,11 +20,14 @@ typedef struct vrWindowApi {
     /* an X window of width x height pixels, not yet shown; NULL and a message */
     vrWindowContext *(*open)(int width, int height, const char *title, char *err, size_t errlen);
     void (*close)(vrWindowContext *c);
-    /* puts rgb (rows top to bottom) into the window, resized to fit it */
+    /* puts rgb (rows top to bottom) into the window: resized to fit it
+     * until the user resized it, then at its top left, the rest black */
     int (*show)(vrWindowContext *c, const unsigned char *rgb, int width, int height,
                 char *err, size_t errlen);
     /* the events queued since the last poll (the oldest dropped past the queue) */
     int (*poll)(vrWindowContext *c, vrWindowEvent *ev, int max);
+    /* the framebuffer's size; 1 when the user (not show) gave it */
+    int (*size)(const vrWindowContext *c, int *width, int *height);
 } vrWindowApi;
 
 #endif

@@ -29,7 +29,7 @@
     X(Render) X(Mass) X(Polyhedron) X(Motion) X(Closest) X(Contact) X(Support)    \
     X(Distbound) X(Broadphase) X(Reach) X(Schedule) X(Response) X(Island) X(Impacts) \
     X(Tunnelling) X(Rest) X(Sliding) X(Heap) X(Quiet) X(Energy) X(Stacking) X(Scale) X(Track) X(Sound) X(Save) X(Parallel) \
-    X(Window) X(Wire) X(Panel)
+    X(Window) X(Hand) X(Wire) X(Panel)
 
 #define VR_DECLARE(s) extern const vrTestSuite vrSuite_##s;
 VR_SUITES(VR_DECLARE)
