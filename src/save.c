@@ -18,6 +18,7 @@ static const vrSaveSection sections[] = {
     {"warm", "a b h n points " POINT_KEYS " friction twist", 0, vrSave_WriteWarm, vrSave_ReadWarm},
     {"pending", "obj t raw " STATE_KEYS, 0, vrSave_WritePending, vrSave_ReadPending},
     {"gap", "", 0, NULL, vrSave_ReadGap},   /* written by the driver, for a deleted object's id */
+    {"grab", VR_GRAB_SAVE_KEYS, 0, vrGrab_Save, vrGrab_Read},   /* the hand's (grab.h) */
     {"live", "", 0, vrSave_WriteLive, vrSave_ReadLive},   /* last: the saved run goes live */
 };
 #define NSECTIONS ((int)(sizeof sections / sizeof sections[0]))

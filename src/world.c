@@ -20,6 +20,7 @@ vrWorld *vrWorld_Create(void)
     vrUpdate_Init(&w->update);
     vrUpdate_Init(&w->pending);
     vrSplitmix_Seed(&w->rng, w->s.seed);
+    vrGrab_Init(&w->grab);
     return w;
 }
 
@@ -71,6 +72,7 @@ void vrWorld_Restart(vrWorld *w)
     vrWorld_ClearTracker(w, VR_DEVICE_HEAD);   /* track time was time since `track` */
     vrWorld_ClearTracker(w, VR_DEVICE_HAND);
     vrSounds_Clear(&w->sounds);
+    vrGrab_Init(&w->grab);
     vrSplitmix_Seed(&w->rng, w->s.seed);
     vrSave_Free(w);
     w->warm.n = 0;
