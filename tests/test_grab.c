@@ -165,14 +165,17 @@ static int moving_hand(vrWorld *w, vec3 from, vec3 u, int n, int up)
 #define STACK 3
 static const vec3 box_half = {0.1, 0.1, 0.1};
 
+/* the hand of a scene: none, in select mode, or there outside it */
+enum { HAND_NONE, HAND_SELECT, HAND_NO_SELECT };
+
 /* three 0.2 m boxes stacked on a floor, settled, and a held ball of
  * radius 0.1 brought at 0.5 m/s into the middle one */
-static vrWorld *stack_scene(vrObjectId *ball, vrObjectId box[STACK], int heap, int gps)
+static vrWorld *hand_stack_scene(vrObjectId *ball, vrObjectId box[STACK], int heap, int gps, int hand)
 {
     vrWorld *w = vrScene_World(0.05, 0.02, 9.8);
     vrSettings s = *vrWorld_Settings(w);
     int k;
-    s.select = 1;
+    s.select = hand == HAND_SELECT;
     s.heap = heap;
     s.gps = gps;
     s.default_elasticity = 0;
@@ -186,8 +189,13 @@ static vrWorld *stack_scene(vrObjectId *ball, vrObjectId box[STACK], int heap, i
         box[k] = vrScene_Box(w, name, box_half, vec3_make(0, 0, 0.1 + 0.2 * k + 0.0005 * k), 1, 0);
     }
     *ball = vrScene_Sphere(w, "ball", 0.1, vec3_make(-0.5, 0, 0.3), vec3_zero(), 1, 0);
-    if (moving_hand(w, vec3_make(-0.5, 0, 0.3), vec3_make(0.5, 0, 0), 41, 41) != 0) return NULL;
+    if (hand != HAND_NONE && moving_hand(w, vec3_make(-0.5, 0, 0.3), vec3_make(0.5, 0, 0), 41, 41) != 0) return NULL;
     return w;
+}
+
+static vrWorld *stack_scene(vrObjectId *ball, vrObjectId box[STACK], int heap, int gps)
+{
+    return hand_stack_scene(ball, box, heap, gps, HAND_SELECT);
 }
 
 /* SPEC 8: the held object is kinematic, it pushes others: the stack's
@@ -339,6 +347,68 @@ static int test_grab_scene_same_bits_serial_heap_off_and_two_workers(void)
     return 0;
 }
 
+/* no select mode: a hand whose trigger is down the whole run cuts no
+ * contact step and moves no body: the run is the one without a hand, to
+ * the bit and the count */
+static int test_a_hand_outside_select_mode_changes_no_bit(void)
+{
+    vrObjectId ball, box[STACK];
+    vrWorld *none = hand_stack_scene(&ball, box, 1, 0, HAND_NONE), *fly = hand_stack_scene(&ball, box, 1, 0, HAND_NO_SELECT);
+    vrStats a, b;
+    ENSURE(none && fly);
+    ENSURE(vrScene_Step(none, 40) == 0 && vrScene_Step(fly, 40) == 0);
+    ENSURE(vrWorld_Held(fly) == VR_NO_OBJECT);
+    ENSURE(vrScene_SameDumps(none, fly));
+    a = vrScene_Stats(none), b = vrScene_Stats(fly);
+    ENSURE(a.checks == b.checks && a.collisions == b.collisions && a.island_steps == b.island_steps && a.subframes == b.subframes);
+    vrWorld_Destroy(none);
+    vrWorld_Destroy(fly);
+    return 0;
+}
+
+/* a held paddle (a flat box, so its spin is the kinematic rule's, not a
+ * sphere's) turning at 2 rad/s about z while the hand crosses two boxes
+ * on a floor at 0.3 m/s */
+static vrWorld *paddle_scene(vrObjectId *hit, int heap, int gps)
+{
+    vrWorld *w = vrScene_World(0.05, 0.02, 9.8);
+    vrSettings s = *vrWorld_Settings(w);
+    vec3 z = vec3_make(0, 0, 1);
+    int k;
+    s.select = 1, s.heap = heap, s.gps = gps, s.default_friction = 0.3, s.default_elasticity = 0.2;
+    snprintf(s.lcm_url, sizeof s.lcm_url, "memq://");
+    if (vrWorld_SetSettings(w, &s, err, sizeof err) != 0) return printf("    settings: %s\n", err), NULL;
+    vrScene_Box(w, "floor", vec3_make(2, 2, 0.1), vec3_make(0, 0, -0.1), -1, 0);
+    *hit = vrScene_Box(w, "box0", vec3_make(0.08, 0.08, 0.08), vec3_make(0.3, 0, 0.08), 1, 0);
+    vrScene_Box(w, "box1", vec3_make(0.08, 0.08, 0.08), vec3_make(0.35, 0.3, 0.08), 1, 0);
+    vrScene_Box(w, "paddle", vec3_make(0.2, 0.03, 0.06), vec3_make(-0.3, 0, 0.1), 1, 0);
+    for (k = 0; k <= 40; k++) {
+        vrTrackerSample smp = sample(0.05 * k, vec3_make(-0.3 + 0.3 * 0.05 * k, 0, 0.1), quat_from_axis_angle(z, 2 * 0.05 * k), 1);
+        if (push(w, &smp) != 0) return NULL;
+    }
+    return w;
+}
+
+/* the kinematic spin reaches the workers: serial, heap off and two
+ * workers give the same bits on the paddle scene */
+static int test_turning_paddle_same_bits_serial_heap_off_and_two_workers(void)
+{
+    vrObjectId hit;
+    vrWorld *serial = paddle_scene(&hit, 1, 0), *no_heap = paddle_scene(&hit, 0, 0), *two = paddle_scene(&hit, 1, 2);
+    vec3 p;
+    ENSURE(serial && no_heap && two);
+    ENSURE(vrScene_Step(serial, 40) == 0 && vrScene_Step(no_heap, 40) == 0 && vrScene_Step(two, 40) == 0);
+    ENSURE(vrWorld_Held(serial) != VR_NO_OBJECT);
+    p = vec3_make(vrScene_State(serial, hit).position[0], vrScene_State(serial, hit).position[1], 0);
+    ENSURE_MSG(vec3_dist(p, vec3_make(0.3, 0, 0)) > 0.05, "the paddle did not move box0 (%g, %g)", p.x, p.y);
+    ENSURE(vrScene_SameDumps(serial, no_heap));
+    ENSURE(vrScene_SameDumps(serial, two));
+    vrWorld_Destroy(serial);
+    vrWorld_Destroy(no_heap);
+    vrWorld_Destroy(two);
+    return 0;
+}
+
 /* ---- smoothing ------------------------------------------------------------------------ */
 
 static void filter_on(vrSettings *s) { s->select = 1, s->hand_filter = 1; }
@@ -455,6 +525,8 @@ static const vrTest tests[] = {
     TEST(test_reselect_grabs_the_last_object_where_it_is),
     TEST(test_trigger_flies_the_view_outside_select_mode),
     TEST(test_grab_scene_same_bits_serial_heap_off_and_two_workers),
+    TEST(test_a_hand_outside_select_mode_changes_no_bit),
+    TEST(test_turning_paddle_same_bits_serial_heap_off_and_two_workers),
     TEST(test_filtered_hand_throws_with_the_filtered_motion),
     TEST(test_a_grab_saved_while_held_goes_on_bit_for_bit),
 };
