@@ -102,7 +102,12 @@ typedef struct vrSettings {
     double default_elasticity;/* 0..1, 1: the elasticity objects created after it start with */
     double contact_step;      /* > 0 .. 0.1 s, 1/240: the longest step between island steps (SPEC 7) */
     double sound_min_speed;   /* >= 0, 0.5 m/s: the slowest impact that sounds (SPEC 8) */
-    int select;               /* 0|1, 0: the hand's trigger grabs objects (1) or flies (0) (SPEC 8) */
+    int select;               /* 0|1, 0: the hand's trigger grabs objects (1) or flies the view (SPEC 8) */
+    double grab_reach;        /* 0..10 m, 0.1: how far from an object's surface the trigger grabs it */
+    double fly_speed;         /* 0..1e6 m/s, 1: the trigger flies the view this fast (select = 0) */
+    int hand_filter;          /* 0|1, 0: the 1-euro filter smooths the hand (SPEC 8's option) */
+    double hand_min_cutoff;   /* 1e-3..1e3 Hz, 1: its cutoff at rest */
+    double hand_beta;         /* 0..1e6 s/m, 10: how fast its cutoff rises with the hand's speed */
     int panel;                /* 0|1, 0: the virtual tool panel is drawn and takes the trigger (SPEC 8) */
 } vrSettings;
 
@@ -287,6 +292,11 @@ int vrWorld_ReadTrack(vrWorld *w, const char *path, char *err, size_t errlen);
 /* simulation time now, and where the next frame ends (the bits the frame
  * loop computes: a frame's end is not time + time_step rounded) */
 double vrWorld_Time(const vrWorld *w);
+/* what the hand holds (select mode, SPEC 8), or VR_NO_OBJECT */
+vrObjectId vrWorld_Held(const vrWorld *w);
+/* how far the trigger has flown the viewpoint (outside select mode, SPEC
+ * 8): added to the view's eye and look (and to a tracked head's) */
+void vrWorld_FlyOffset(const vrWorld *w, double offset[3]);
 double vrWorld_NextFrameEnd(const vrWorld *w);
 
 /* a track file's samples in order, each handed to fn (its time as in the

@@ -111,7 +111,12 @@ const Command sh_commands[] = {
      K_TEXT, R_ANY, 0, VR_PATH_MAX - 1, 1, NULL, T_NONE, 0, 0, run_sound_log},
     {"trackers", "trackers = URL", "take live head and hand samples from LCM at URL (empty: stop)", "none", G_EXT, F_ASSIGN,
      K_WORD, R_ANY, 0, 255, 1, NULL, T_NONE, 0, 0, run_trackers},
-    SETTING("select", "select = 0|1", "1: the hand's trigger grabs and throws objects; 0: it flies", "0", G_EXT, K_INT, R_CLOSED, 0, 1, select),
+    SETTING("select", "select = 0|1", "1: the hand's trigger grabs and throws objects; 0: it flies the view", "0", G_EXT, K_INT, R_CLOSED, 0, 1, select),
+    SETTING("grab_reach", "grab_reach = m", "the trigger grabs an object this near its surface, m", "0.1", G_EXT, K_NUM, R_CLOSED, 0, 10, grab_reach),
+    SETTING("fly_speed", "fly_speed = v", "the trigger flies the view this fast along the hand, m/s (select = 0)", "1", G_EXT, K_NUM, R_CLOSED, 0, VR_SPEED_MAX, fly_speed),
+    SETTING("hand_filter", "hand_filter = 0|1", "1: smooth the hand with the 1-euro filter (a throw takes its motion)", "0", G_EXT, K_INT, R_CLOSED, 0, 1, hand_filter),
+    SETTING("hand_min_cutoff", "hand_min_cutoff = f", "the hand filter's cutoff at rest, Hz", "1", G_EXT, K_NUM, R_CLOSED, 1e-3, 1e3, hand_min_cutoff),
+    SETTING("hand_beta", "hand_beta = b", "how fast the hand filter's cutoff rises with speed, s/m", "10", G_EXT, K_NUM, R_CLOSED, 0, 1e6, hand_beta),
     SETTING("panel", "panel = 0|1", "1: the virtual tool panel is drawn and the hand works it (show panel)", "0", G_EXT, K_INT, R_CLOSED, 0, 1, panel),
     VERB("track", "track FILE", "play a track file (head and hand samples) from now, in simulation time", G_EXT, F_PATH, R_ANY, 0, 0, run_track),
 

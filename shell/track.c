@@ -21,7 +21,11 @@ vrView sh_current_view(const Shell *sh)
 {
     vrView v = sh->view;
     vrTrackerSample head;
+    double fly[3];
+    int i;
     if (vrWorld_TrackerPose(sh->world, VR_DEVICE_HEAD, &head) == 0) vrView_FromHead(&v, &head);
+    vrWorld_FlyOffset(sh->world, fly);   /* the trigger flew the viewpoint (select = 0, SPEC 8) */
+    for (i = 0; i < 3; i++) v.eye[i] += fly[i], v.look[i] += fly[i];
     return v;
 }
 

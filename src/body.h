@@ -29,7 +29,8 @@ typedef enum {
     VR_ROT_NONE,      /* static, or L = 0: the orientation never changes */
     VR_ROT_ISOTROPIC, /* I1 = I2 = I3: omega constant, exact */
     VR_ROT_SYMMETRIC, /* two equal moments: regular precession, exact */
-    VR_ROT_GENERAL    /* asymmetric: L-preserving splitting integrator */
+    VR_ROT_GENERAL,   /* asymmetric: L-preserving splitting integrator */
+    VR_ROT_KINEMATIC  /* held by the hand (grab.h): constant world omega, kept in m.L */
 } vrRotKind;
 
 #define VR_ROT_CHECKPOINTS 32
@@ -70,6 +71,9 @@ typedef struct vrBody {
     int island;                     /* its island at the last island step or rest (the
                                        island's lowest body id), -1 none */
     int hit;                        /* an impulse hit it in the current frame */
+    int kinematic;                  /* held by the hand (SPEC 8, grab.h): it follows the hand,
+                                       infinite mass to others, no force, never rests; m.L
+                                       holds its world angular velocity, not a momentum */
     /* the last pose asked for: a body in several pairs is asked again and
      * again at the same grid point (the same bits either way) */
     double pose_t;
@@ -124,6 +128,8 @@ double vrBody_SpeedBound(const vrBody *b, double t, double span, double accel, d
 double vrBody_SpinBound(const vrBody *b);
 /* dynamic and not resting */
 static inline int vrBody_IsFree(const vrBody *b) { return !b->is_static && !b->resting; }
+/* infinite mass in a response or an island solve: static, or held (kinematic) */
+static inline int vrBody_Immovable(const vrBody *b) { return b->is_static || b->kinematic; }
 double vrBody_Energy(vrBody *b, double t, vec3 g);
 
 #endif

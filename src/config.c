@@ -46,6 +46,10 @@ vrSettings vrSettings_Default(void)
     s.default_elasticity = 1.0;
     s.contact_step = 1.0 / 240;
     s.sound_min_speed = 0.5;
+    s.grab_reach = 0.1;
+    s.fly_speed = 1.0;
+    s.hand_min_cutoff = 1.0;
+    s.hand_beta = 10.0;
     return s;
 }
 
@@ -99,6 +103,19 @@ static int check_times(const vrSettings *s, char *err, size_t n)
     return 0;
 }
 
+/* the hand's select mode (SPEC 8, grab.h) */
+static int check_hand(const vrSettings *s, char *err, size_t n)
+{
+    if (s->select != 0 && s->select != 1) return out_of_range(err, n, "select", "0 or 1", s->select);
+    if (bad_range(s->grab_reach, 0, 10, 0)) return out_of_range(err, n, "grab_reach", "0..10 m", s->grab_reach);
+    if (bad_range(s->fly_speed, 0, VR_SPEED_MAX, 0)) return out_of_range(err, n, "fly_speed", "0..1e6 m/s", s->fly_speed);
+    if (s->hand_filter != 0 && s->hand_filter != 1) return out_of_range(err, n, "hand_filter", "0 or 1", s->hand_filter);
+    if (bad_range(s->hand_min_cutoff, 1e-3, 1e3, 0))
+        return out_of_range(err, n, "hand_min_cutoff", "1e-3..1e3 Hz", s->hand_min_cutoff);
+    if (bad_range(s->hand_beta, 0, 1e6, 0)) return out_of_range(err, n, "hand_beta", "0..1e6 s/m", s->hand_beta);
+    return 0;
+}
+
 int vrSettings_Check(const vrSettings *s, char *err, size_t n)
 {
     vec3 f = vrVec3_Of(s->force_dir);
@@ -120,9 +137,8 @@ int vrSettings_Check(const vrSettings *s, char *err, size_t n)
         return out_of_range(err, n, "default_elasticity", "0..1", s->default_elasticity);
     if (bad_range(s->sound_min_speed, 0, VR_SPEED_MAX, 0))
         return out_of_range(err, n, "sound_min_speed", "0..1e6 m/s", s->sound_min_speed);
-    if (s->select != 0 && s->select != 1) return out_of_range(err, n, "select", "0 or 1", s->select);
     if (s->panel != 0 && s->panel != 1) return out_of_range(err, n, "panel", "0 or 1", s->panel);
-    return 0;
+    return check_hand(s, err, n);
 }
 
 /* the pose, velocities, colour and mass of any object */

@@ -9,6 +9,10 @@ static int constant_spin(const vrBody *b, vec3 *w)
 {
     *w = vec3_zero();
     if (b->shape.kind == VR_SHAPE_SPHERE || b->rot == VR_ROT_NONE) return 1;
+    if (b->rot == VR_ROT_KINEMATIC) {   /* held: the world omega itself (body.h) */
+        *w = b->m.L;
+        return 1;
+    }
     if (b->rot != VR_ROT_ISOTROPIC) return 0;
     *w = vec3_scale(b->m.L, 1.0 / b->moments.x);
     return 1;

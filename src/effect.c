@@ -18,7 +18,7 @@ static void impact_body(vrBody *b, double t, vec3 c, vrImpactBody *ib)
 {
     vrPose pose;
     vrBody_Pose(b, t, &pose);
-    ib->is_static = b->is_static;
+    ib->is_static = vrBody_Immovable(b);   /* a held body: infinite mass, its velocity kept */
     ib->mass = b->mass;
     ib->inertia = vrBody_InertiaWorld(b, &pose);
     ib->inv_inertia = vrBody_InvInertiaWorld(b, &pose);
@@ -38,7 +38,7 @@ static int kick(const vrResponding *o, vrUpdate *up, vrBody *b, const vrEvent *e
 {
     vrBodyState *st;
     double spin = vec3_len(w), cap = o->flight->max_angular;
-    if (b->is_static) return 0;
+    if (vrBody_Immovable(b)) return 0;
     st = vrUpdate_Body(up, b, ev->t);
     if (!st) return -1;
     if (spin > cap) {
@@ -54,11 +54,31 @@ static int kick(const vrResponding *o, vrUpdate *up, vrBody *b, const vrEvent *e
     return 0;
 }
 
+/* SPEC 8: a static object stops a held one, which slides along it: its
+ * velocity into the static is removed at the contact, and its turning
+ * (which could bring another point in), until the next cut re-aims it at
+ * the hand (grab.c).  sign: +1 when the held body is the event's a (the
+ * normal points from it into the static), -1 when it is b. */
+static int slide_held(vrUpdate *up, vrBody *held, const vrEvent *ev, double sign)
+{
+    vrBodyState *st = vrUpdate_Body(up, held, ev->t);
+    vec3 n = vec3_scale(ev->n, sign);
+    double into;
+    if (!st) return -1;
+    into = vec3_dot(st->v, n);
+    if (into > 0) st->v = vec3_madd(st->v, -into, n);
+    st->L = vec3_zero();
+    st->hit = 1;
+    return 0;
+}
+
 static int respond_impulse(const vrResponding *o, const vrEvent *ev, vrUpdate *up)
 {
     vrBody *A = o->body[ev->a], *B = o->body[ev->b];
     vrImpactBody ia, ib;
     vec3 v1, w1, v2, w2;
+    if (A->kinematic && B->is_static) return slide_held(up, A, ev, 1);
+    if (B->kinematic && A->is_static) return slide_held(up, B, ev, -1);
     impact_body(A, ev->t, ev->c, &ia);
     impact_body(B, ev->t, ev->c, &ib);
     if (vrResponder_Solve(o->responder, &ia, &ib, ev->n, ev->e, ev->mu, &v1, &w1, &v2, &w2, NULL) != 0) return -1;
@@ -117,16 +137,17 @@ static void pay_for_lift(const vrResponding *o, const vrBody *b, vrBodyState *st
 static int respond_pushout(const vrResponding *o, const vrEvent *ev, vrUpdate *up)
 {
     vrBody *b[2] = {o->body[ev->a], o->body[ev->b]};
-    double w0 = b[0]->inv_mass, w1 = b[1]->inv_mass, total = ev->depth + VR_PUSHOUT_GAP;
-    double share[2], sign[2] = {-1, 1};
+    double w0 = b[0]->kinematic ? 0 : b[0]->inv_mass, w1 = b[1]->kinematic ? 0 : b[1]->inv_mass;
+    double total = ev->depth + VR_PUSHOUT_GAP, share[2], sign[2] = {-1, 1};
     int s;
+    if (w0 + w1 == 0) w0 = b[0]->kinematic, w1 = b[1]->kinematic;   /* held against a static: it moves */
     if (w1 > 0 && b[0]->contact && !b[1]->contact) w0 = 0;
     else if (w0 > 0 && b[1]->contact && !b[0]->contact) w1 = 0;
     share[0] = w0 / (w0 + w1);
     share[1] = w1 / (w0 + w1);
     for (s = 0; s < 2; s++) {
         vrBodyState *st;
-        if (b[s]->is_static) continue;
+        if (b[s]->is_static || (b[s]->kinematic && share[s] == 0)) continue;
         st = vrUpdate_Body(up, b[s], ev->t);
         if (!st) return -1;
         st->x = vec3_madd(st->x, sign[s] * share[s] * total, ev->n);

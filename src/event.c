@@ -32,6 +32,7 @@ void vrBody_Capture(vrBody *b, double t, vrBodyState *st)
     st->hit = b->hit;
     st->contact = b->contact;
     st->island = b->island;
+    st->kinematic = b->kinematic;
     st->clamped = 0;
 }
 
@@ -48,6 +49,7 @@ void vrBody_CaptureAnchor(const vrBody *b, vrBodyState *st)
     st->hit = b->hit;
     st->contact = b->contact;
     st->island = b->island;
+    st->kinematic = b->kinematic;
     st->clamped = 0;
 }
 
@@ -75,6 +77,7 @@ int vrBody_Apply(vrBody *b, const vrBodyState *st, const vrFlight *f)
     b->hit = st->hit;
     b->contact = st->contact;
     b->island = st->island;
+    b->kinematic = st->kinematic;
     if (st->raw) {
         vrBody_Restore(b, st->t, st->x, st->v, st->q, st->L, f);
         return st->clamped;

@@ -43,6 +43,7 @@ typedef struct vrBodyState {
     int raw;
     int resting, hit;
     int contact, island;     /* vrBody's */
+    int kinematic;           /* vrBody's: held by the hand (grab.h); x, v, q, L (= omega) its motion */
     int clamped;             /* the responder's max_angular cut this state's spin (stats clamps) */
 } vrBodyState;
 

@@ -56,7 +56,8 @@ static void join(int *parent, int a, int b)
     else if (b < a) parent[a] = b;
 }
 
-static int moving(const vrWorld *w, int id) { return !w->table.obj[id]->body.is_static; }
+/* a held body (kinematic) is a boundary, as a static one, with a velocity */
+static int moving(const vrWorld *w, int id) { return !vrBody_Immovable(&w->table.obj[id]->body); }
 
 /* one island's solve: its bodies (object ids, in id order; statics too)
  * and its contacts */
@@ -93,12 +94,12 @@ static void island_body(vrWorld *w, int id, double t, vec3 gh, vrIslandBody *out
     memset(out, 0, sizeof *out);
     vrBody_Pose(b, t, &pose);
     out->x = pose.p;
-    out->dynamic = !b->is_static;
-    out->inv_inertia = b->is_static ? mat33_zero() : vrBody_InvInertiaWorld(b, &pose);
-    out->inv_mass = b->inv_mass;
-    if (!out->dynamic) return;
-    vrBody_Velocity(b, t, &out->v);
-    out->v = vec3_add(out->v, gh);
+    out->dynamic = !vrBody_Immovable(b);
+    out->inv_inertia = !out->dynamic ? mat33_zero() : vrBody_InvInertiaWorld(b, &pose);
+    out->inv_mass = !out->dynamic ? 0 : b->inv_mass;
+    if (b->is_static) return;
+    vrBody_Velocity(b, t, &out->v);   /* a held body: the hand's motion, no force */
+    if (out->dynamic) out->v = vec3_add(out->v, gh);
     out->w = vrBody_Omega(b, &pose);
 }
 
@@ -186,7 +187,7 @@ static int solve_one(vrWorld *w, Island *is, const int *parent, int r, double t,
         vrBodyState *st;
         vrPose pose;
         mat33 inertia;
-        if (b->is_static) continue;
+        if (vrBody_Immovable(b)) continue;
         if (!(st = vrUpdate_Body(up, b, t))) return -1;
         pose = vrPose_make(st->x, st->q);
         inertia = vrBody_InertiaWorld(b, &pose);

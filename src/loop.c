@@ -12,6 +12,7 @@
  *   too_many_steps a frame's work is bounded (SPEC 11)
  *   reach_changed  the grid's reach bounds follow the bodies an event changed
  *   contact_steps, contact_point   the frame's contact steps
+ *   contact_step, hand_steps   one contact step; the steps the hand cuts it into
  *   run_span       the events of a span
  *   run_frame      one frame: the loop
  */
@@ -159,6 +160,31 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
     }
 }
 
+/* the contact step [at, end]: its island step at `at`, then its events */
+static int contact_step(vrWorld *w, Frame *f, double at, double end, const vrParams *p, char *err, size_t n)
+{
+    int r = f->T > w->t && moving_bodies(w) ? vrIsland_Step(w, at, end - at, err, n) : 0;
+    if (r != 0) return r;
+    reach_changed(w, &w->update, p);
+    f->ts = at;
+    return run_span(w, f, end, p, err, n);
+}
+
+/* SPEC 8: the contact step [at, end] cut also where the hand's samples
+ * act (grab.h), the hand dispatched at each cut before its island step.
+ * No hand, or outside select mode: one cut, the step as it was. */
+static int hand_steps(vrWorld *w, Frame *f, double at, double end, const vrParams *p, char *err, size_t n)
+{
+    for (;;) {
+        double cut;
+        int r = vrGrab_Cut(w, at, end, &cut, err, n);
+        if (r != 0) return r;
+        reach_changed(w, &w->update, p);
+        if ((r = contact_step(w, f, at, cut, p, err, n)) != 0 || !(cut < end)) return r;
+        at = cut;
+    }
+}
+
 /* the whole frame's grid from its start, before anything moves: a frame
  * too long is refused with the world unchanged */
 static int frame_bounded(const vrWorld *w, const Frame *f, const vrParams *p, char *err, size_t n)
@@ -174,6 +200,7 @@ static int run_frame(vrWorld *w, char *err, size_t n)
 {
     vrParams p = vrSettings_Params(&w->s);
     long steps = contact_steps(w), k;
+    vrGrab grab = w->grab;   /* the hand as it was, for a frame run again */
     Frame f;
     f.T = w->t_base + (double)(w->frames + 1 - w->frames_base) * w->s.time_step;
     f.ts = w->t;
@@ -185,13 +212,9 @@ static int run_frame(vrWorld *w, char *err, size_t n)
     if (frame_bounded(w, &f, &p, err, n) != 0) return -1;
     for (k = 0; k < steps; k++) {
         double at = contact_point(w->t, f.T, k, steps), end = contact_point(w->t, f.T, k + 1, steps);
-        int r = f.T > w->t && moving_bodies(w) ? vrIsland_Step(w, at, end - at, err, n) : 0;
-        if (r == 0) {
-            reach_changed(w, &w->update, &p);
-            f.ts = at;
-            r = run_span(w, &f, end, &p, err, n);
-        }
+        int r = hand_steps(w, &f, at, end, &p, err, n);
         if (r == VR_RESTART_FRAME) {   /* a worker died: the frame again from its start */
+            w->grab = grab;
             f.ts = w->t;
             vrReach_Frame(&w->reach, w->dyn, w->ndyn, f.ts, f.T, &p.flight);
             f.instant = w->instant;

@@ -22,6 +22,7 @@
 /* |L| / I_min: what |omega| never exceeds in free flight */
 static double spin_of(const vrBody *b)
 {
+    if (b->kinematic) return vec3_len(b->m.L);
     return b->is_static || b->i_min <= 0 ? 0.0 : vec3_len(b->m.L) / b->i_min;
 }
 
@@ -259,6 +260,8 @@ static quat orientation_at(vrBody *b, double tau)
         return symmetric_orientation(b, tau);
     case VR_ROT_GENERAL:
         return general_orientation(b, tau);
+    case VR_ROT_KINEMATIC:   /* the hand's slerp: a constant world omega */
+        return quat_normalize(quat_mul(quat_from_rotvec(vec3_scale(b->m.L, tau)), b->m.q0));
     default:
         return b->m.q0;
     }
@@ -286,13 +289,14 @@ void vrBody_Pose(vrBody *b, double t, vrPose *pose)
  * straight to the next one (island.h, SPEC 7) */
 static vec3 flight_accel(const vrBody *b, vec3 g)
 {
-    return b->is_static || b->resting || b->contact ? vec3_zero() : g;
+    return b->is_static || b->resting || b->contact || b->kinematic ? vec3_zero() : g;
 }
 
 static void classify_rotation(vrBody *b)
 {
     b->m.spin = spin_of(b);
     if (b->is_static || vec3_len2(b->m.L) == 0.0) b->rot = VR_ROT_NONE;
+    else if (b->kinematic) b->rot = VR_ROT_KINEMATIC;
     else if (b->sym_axis == 3) b->rot = VR_ROT_ISOTROPIC;
     else if (b->sym_axis >= 0) b->rot = VR_ROT_SYMMETRIC;
     else b->rot = VR_ROT_GENERAL;
@@ -350,7 +354,7 @@ int vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vrF
     m->L = L;
     if (!b->is_static && vec3_len2(L) > 0) {
         mat33 R = mat33_from_quat(m->q0);
-        double w = vec3_len(omega_at(b, &R));
+        double w = b->kinematic ? vec3_len(L) : vec3_len(omega_at(b, &R));
         if (w > f->max_angular) m->L = vec3_scale(L, f->max_angular / w), clamps++;
     }
     m->a = flight_accel(b, f->accel);
@@ -403,6 +407,7 @@ void vrBody_ShapePose(vrBody *b, double t, vrPose *pose)
 vec3 vrBody_Omega(const vrBody *b, const vrPose *pose)
 {
     if (b->rot == VR_ROT_NONE) return vec3_zero();
+    if (b->rot == VR_ROT_KINEMATIC) return b->m.L;
     return omega_at(b, &pose->R);
 }
 
@@ -435,14 +440,16 @@ double vrBody_SpeedBound(const vrBody *b, double t, double span, double accel, d
 double vrBody_SpinBound(const vrBody *b) { return b->m.spin; }
 
 
-/* SPEC 1.3: 1/2 m v^2 + 1/2 omega.L - m g.x */
+/* SPEC 1.3: 1/2 m v^2 + 1/2 omega.L - m g.x (a held body's L is I omega) */
 double vrBody_Energy(vrBody *b, double t, vec3 g)
 {
     vrPose p;
-    vec3 v;
+    vec3 v, w, wb;
     if (b->is_static) return 0.0;
     vrBody_Pose(b, t, &p);
     vrBody_Velocity(b, t, &v);
-    return 0.5 * b->mass * vec3_dot(v, v) + 0.5 * vec3_dot(vrBody_Omega(b, &p), b->m.L)
-         - b->mass * vec3_dot(g, p.p);
+    w = vrBody_Omega(b, &p);
+    wb = mat33_tmulv(&p.R, w);
+    return 0.5 * b->mass * vec3_dot(v, v) - b->mass * vec3_dot(g, p.p)
+         + 0.5 * (b->kinematic ? vec3_dot(wb, mat33_mulv(&b->inertia, wb)) : vec3_dot(w, b->m.L));
 }

@@ -91,9 +91,14 @@ static int qualifies(vrWorld *w, const vrUpdate *up, vrObject *o)
  * some body of island i does not). */
 int vrRest_FrameEnd(vrWorld *w, vrUpdate *up)
 {
-    unsigned char *fails = calloc((size_t)w->table.n + 1, 1);
+    unsigned char *fails;
     int i;
-    if (!fails) return -1;
+    /* SPEC 8: while the hand holds a body nothing starts to rest: a body
+     * lying on the held one, frozen, would hang in the air when the hand
+     * moves it away (a kinematic body wakes what it meets, not what it
+     * leaves) */
+    if (w->grab.held >= 0) return 0;
+    if (!(fails = calloc((size_t)w->table.n + 1, 1))) return -1;
     for (i = 0; i < w->table.n; i++) {
         vrObject *o = w->table.obj[i];
         if (!o || !o->live || o->body.is_static || o->body.resting) continue;

@@ -25,6 +25,7 @@ static const vrSaveSection sections[] = {
      * reader (save_sections.h).  The grab's state (src/grab*.c) is one:
      * written after the samples it holds on to, before `live`. */
     {"gap", "", 0, NULL, vrSave_ReadGap},   /* written by the driver, for a deleted object's id */
+    {"grab", VR_GRAB_SAVE_KEYS, 0, vrGrab_Save, vrGrab_Read},   /* the hand's (grab.h) */
     {"live", "", 0, vrSave_WriteLive, vrSave_ReadLive},   /* last: the saved run goes live */
 };
 #define NSECTIONS ((int)(sizeof sections / sizeof sections[0]))

@@ -1,7 +1,7 @@
 /* track.c — one tracker's samples and the motion between them (SPEC 8).
  *
  *   segment        the sample at or before t (binary search)
- *   turn           the rotation vector taking one orientation to the next
+ *   vrTrack_Turn   the rotation vector taking one orientation to the next
  *   vrTrack_At     the interpolated pose: lerp and slerp
  *   vrTrack_Velocity   the motion's velocity on a segment (the throw, SPEC 8)
  *
@@ -55,8 +55,7 @@ static quat sample_quat(const vrTrackerSample *s)
     return quat_make(s->orientation[0], s->orientation[1], s->orientation[2], s->orientation[3]);
 }
 
-/* the rotation vector r (world frame) with exp(r / 2) q0 = q1, the short way */
-static vec3 turn(quat q0, quat q1)
+vec3 vrTrack_Turn(quat q0, quat q1)
 {
     quat d = quat_mul(q1, quat_conj(q0));
     vec3 v;
@@ -90,7 +89,7 @@ int vrTrack_At(const vrTrack *tr, double t, vrTrackerSample *out)
     b = &tr->s[k + 1];
     u = (t - a->t) / (b->t - a->t);
     set_pose(out, vec3_lerp(sample_pos(a), sample_pos(b), u),
-             quat_mul(quat_from_rotvec(vec3_scale(turn(sample_quat(a), sample_quat(b)), u)), sample_quat(a)));
+             quat_mul(quat_from_rotvec(vec3_scale(vrTrack_Turn(sample_quat(a), sample_quat(b)), u)), sample_quat(a)));
     return 0;
 }
 
@@ -103,7 +102,7 @@ int vrTrack_Velocity(const vrTrack *tr, double t, double v[3], double w[3])
         const vrTrackerSample *a = &tr->s[k], *b = &tr->s[k + 1];
         double dt = b->t - a->t;
         dv = vec3_scale(vec3_sub(sample_pos(b), sample_pos(a)), 1 / dt);
-        dw = vec3_scale(turn(sample_quat(a), sample_quat(b)), 1 / dt);
+        dw = vec3_scale(vrTrack_Turn(sample_quat(a), sample_quat(b)), 1 / dt);
     }
     v[0] = dv.x, v[1] = dv.y, v[2] = dv.z;
     w[0] = dw.x, w[1] = dw.y, w[2] = dw.z;

@@ -6,6 +6,7 @@
 #define VROC_TRACK_H
 
 #include "vroc.h"
+#include "vec.h"
 
 typedef struct vrTrack {
     vrTrackerSample *s;      /* by time, never decreasing */
@@ -26,6 +27,9 @@ int vrTrack_At(const vrTrack *tr, double t, vrTrackerSample *out);
  * that holds t, the later one where two meet (zero outside the samples).
  * -1 when there is no sample. */
 int vrTrack_Velocity(const vrTrack *tr, double t, double v[3], double w[3]);
+/* the rotation vector r (world frame) with exp(r / 2) q0 = q1, the short
+ * way: the turn of a slerp from q0 to q1 */
+vec3 vrTrack_Turn(quat q0, quat q1);
 void vrTrack_Clear(vrTrack *tr);
 void vrTrack_Free(vrTrack *tr);
 

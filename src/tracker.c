@@ -37,6 +37,10 @@ void vrWorld_ClearTracker(vrWorld *w, vrDevice dev)
 
 double vrWorld_Time(const vrWorld *w) { return w->t; }
 
+vrObjectId vrWorld_Held(const vrWorld *w) { return w->grab.held >= 0 ? w->grab.held : VR_NO_OBJECT; }
+
+void vrWorld_FlyOffset(const vrWorld *w, double offset[3]) { vrGrab_FlyOffset(w, offset); }
+
 /* loop.c's run_frame: frame times are t_base + k time_step */
 double vrWorld_NextFrameEnd(const vrWorld *w)
 {

@@ -22,6 +22,7 @@ vrWorld *vrWorld_Create(void)
     vrUpdate_Init(&w->pending);
     vrSplitmix_Seed(&w->rng, w->s.seed);
     vrPanel_Init(&w->panel);
+    vrGrab_Init(&w->grab);
     return w;
 }
 
@@ -74,6 +75,7 @@ void vrWorld_Restart(vrWorld *w)
     vrWorld_ClearTracker(w, VR_DEVICE_HAND);
     vrSounds_Clear(&w->sounds);
     vrPanel_Restart(&w->panel);
+    vrGrab_Init(&w->grab);
     vrSplitmix_Seed(&w->rng, w->s.seed);
     vrSave_Free(w);
     w->warm.n = 0;

@@ -14,6 +14,8 @@
  *   owners.c                    the owner choice and the serial owner set
  *   island_step.c               the contacts of an instant, solved together (SPEC 7)
  *   start.c                     a start: objects go live, owners come to date
+ *   grab.c grab_save.c          the hand's select mode (SPEC 8): grab, throw, fly;
+ *   hand_filter.c               its save line; the 1-euro filter on the hand
  *   loop.c edit.c query.c       the frame loop; live edits; the getters
  *   world.c random.c output.c   life cycle; `random`; `dump` and `stats`
  */
@@ -29,6 +31,7 @@
 #include "sound.h"
 #include "track.h"
 #include "warm.h"
+#include "grab.h"
 
 typedef struct vrSgp vrSgp;
 struct vrResume;
@@ -71,6 +74,7 @@ struct vrWorld {
     vrSounds sounds;         /* this frame's collision sounds (sound.c, SPEC 8) */
     vrTrack track[2];        /* the head and the hand, by vrDevice (tracker.c, SPEC 8) */
     vrPanel panel;           /* the virtual tool panel (panel.c, SPEC 8) */
+    vrGrab grab;             /* what the hand holds, the view it flew (grab.c, SPEC 8) */
     /* `random` */
     int random_next;
     vrSplitmix rng;

@@ -32,7 +32,8 @@ int vrWire_PutStates(vrWireStates *w, const vrUpdate *up)
         m->q[0] = st->q.w; m->q[1] = st->q.x; m->q[2] = st->q.y; m->q[3] = st->q.z;
         m->raw = (int8_t)st->raw;
         m->resting = (int8_t)st->resting;
-        m->hit = (int8_t)(st->hit | st->clamped << 1);   /* bit 1: clamped, no new field on the wire */
+        /* bit 1: clamped, bit 2: kinematic (held by the hand), no new field on the wire */
+        m->hit = (int8_t)(st->hit | st->clamped << 1 | st->kinematic << 2);
         m->contact = (int8_t)st->contact;
         m->island = st->island;
     }
@@ -60,6 +61,7 @@ static int get_state(const vroc_body_state_t *m, int max_id, vrBodyState *st)
     st->resting = m->resting != 0;
     st->hit = (m->hit & 1) != 0;
     st->clamped = (m->hit & 2) != 0;
+    st->kinematic = (m->hit & 4) != 0;
     st->contact = m->contact != 0;
     st->island = m->island;
     return 0;
