@@ -55,6 +55,7 @@ static int push(ShHand *h, vrWorld *w, const double p[3], double t, unsigned but
     if (vrWorld_PushSample(w, VR_DEVICE_HAND, &s, h->error, sizeof h->error) != 0) return -1;
     h->pushed = 1;
     h->last_t = t;
+    memcpy(h->last_p, p, sizeof h->last_p);
     if (h->log) {   /* what the world took, not what it refused */
         fprintf(h->log, "%.17g hand %.17g %.17g %.17g 1 0 0 0 %u\n", t, p[0], p[1], p[2], buttons);
         fflush(h->log);
@@ -133,11 +134,12 @@ int hand_move(ShHand *h, vrWorld *w, const double o[3], const double d[3], const
     return push(h, w, p, t, VR_BUTTON_TRIGGER);
 }
 
-/* The trigger goes up where the pointer is.  The throw is the velocity of
- * the interpolated motion at that instant, on the segment that starts
- * there (vrTrack_Velocity: the later one where two meet), so the hand runs
- * on for HAND_VELOCITY_S at the drag's velocity: the throw is the drag's,
- * not the one poll's step before the release.  A drag that took no
+/* The trigger goes up where the pointer is, put on the drag's line.  The
+ * throw is the velocity of the interpolated motion at that instant, so
+ * both segments that meet there move at the drag's velocity: the one
+ * that ends there (the release point is the last sample's plus v dt) and
+ * the one that starts there (the hand runs on for HAND_VELOCITY_S at v):
+ * the throw is the drag's, not the one poll's step before the release.  A drag that took no
  * simulated time (time stopped) has no velocity: the hand stays, and what
  * it held is let go at rest. */
 int hand_release(ShHand *h, vrWorld *w, const double o[3], const double d[3], const HandClock *c, double tw)
@@ -149,6 +151,11 @@ int hand_release(ShHand *h, vrWorld *w, const double o[3], const double d[3], co
     on_plane(h, o, d, p);
     keep(h, p, t);
     moving = velocity(h, v);
+    /* on the drag's line from the last sample, so that the segment that
+     * ends at the release moves at v too: select mode throws with the
+     * motion that brought the hand there (man vroc, SELECT MODE) */
+    if (moving && h->pushed && t > h->last_t)
+        for (i = 0; i < 3; i++) p[i] = h->last_p[i] + v[i] * (t - h->last_t);
     if (push(h, w, p, t, 0) != 0) return -1;
     if (h->log) fprintf(h->log, "# throw %.17g %.17g %.17g\n", v[0], v[1], v[2]), fflush(h->log);
     if (!moving) return 0;

@@ -33,6 +33,7 @@ typedef struct ShHand {
     int count;                  /* samples kept, the newest at count-1 */
     int pushed;                 /* a sample went into the world: last_t holds */
     double last_t;              /* its time: times never decrease */
+    double last_p[3];           /* its position */
     char error[256];            /* the world refused a sample ("" none) */
     FILE *log;                  /* $VROC_HAND_LOG */
 } ShHand;

@@ -38,7 +38,6 @@ typedef struct ShWindow {
     int dirty;                  /* the frame shown is not the current one */
     int dragging;               /* a trackball drag is going on */
     double last_x, last_y;
-    int select;                 /* the mouse is the hand (key g) */
     ShHand hand;
     int hand_reported;          /* the world refused a sample of this drag: said once */
 } ShWindow;
@@ -108,18 +107,25 @@ static void reset_view(Shell *sh)
     memcpy(sh->view.up, d.up, sizeof d.up);
 }
 
+/* g: select mode is the library's setting (SPEC 8), the one `select = 1`
+ * and the panel's select button set, so that the three agree */
+static void toggle_select(Shell *sh)
+{
+    vrSettings s = *vrWorld_Settings(sh->world);
+    char err[256];
+    s.select = !s.select;
+    if (vrWorld_SetSettings(sh->world, &s, err, sizeof err) != 0) report(sh, err);
+}
+
 static void on_key(Shell *sh, int key)
 {
-    ShWindow *w = sh->window;
     switch (key) {
     case ' ': toggle_run(sh); break;
     case '.': case 'n': step_one(sh); break;
     case 't': sh->view.see_through = (sh->view.see_through + 1) % 3; break;
     case 'm': sh->window_mode = (vrWindowMode)((sh->window_mode + 1) % 3); break;
     case 'r': reset_view(sh); break;
-    /* TODO(grab merge): set the library's `select` setting (src/config.c)
-     * instead of this flag, so that `select = 1` and the panel agree */
-    case 'g': w->select = !w->select; break;
+    case 'g': toggle_select(sh); break;
     case 27: sh_window_close(sh); return;
     default: return;
     }
@@ -169,7 +175,7 @@ static void on_press(Shell *sh, const vrWindowEvent *e)
     int r;
     if (e->button != 1) return;
     pointer_ray(sh, e->x, e->y, o, d, f);
-    if (w->select) {
+    if (vrWorld_Settings(sh->world)->select) {
         w->hand_reported = 0;
         r = hand_press(&w->hand, sh->world, o, d, f, &c, e->time);
         hand_result(sh, r);
