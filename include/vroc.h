@@ -298,6 +298,7 @@ int vrTrackFile_Read(const char *path, vrTrackSampleFn fn, void *user, char *err
 void vrView_FromHead(vrView *view, const vrTrackerSample *head);
 
 /* ---- collision sounds (SPEC 8) ----------------------------------------- */
+#define VR_SOUND_DEFAULT "bounce"   /* the built-in sound, when collision_sound is empty */
 /* One impact faster than sound_min_speed: its time, volume
  * (collision_vol * min(1, speed / 10 m/s)), the point where its impulse
  * acts, its approach speed and the pair.  At most one per pair per 0.1 s. */

@@ -97,6 +97,8 @@ static void send_earliest(vrWorker *k, int64_t seq, int found, const vrEvent *ev
         m.t = ev->t;
         m.order = ev->order;
         m.kind = (int8_t)ev->kind;
+        m.approach = ev->approach;
+        m.point[0] = ev->c.x, m.point[1] = ev->c.y, m.point[2] = ev->c.z;
     }
     m.checks = os.checks;
     m.heap_pops = os.heap_pops;
