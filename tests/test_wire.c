@@ -141,7 +141,7 @@ static int test_grids_past_a_frames_steps_are_refused(void)
     vroc_grid_t m;
     vrGrid g;
     memset(&m, 0, sizeof m);
-    m.t0 = 0, m.T = 0.01, m.frame_T = 0.01, m.n = 2 * (int64_t)VR_FRAME_STEPS_MAX, m.h = m.T / (double)m.n;
+    m.t0 = 0, m.T = 0.01, m.frame_T = 0.01, m.n = (int64_t)VR_FRAME_STEPS_HARD_MAX, m.h = m.T / (double)m.n;
     ENSURE(vrWire_GetGrid(&m, &g) == 0 && g.n == m.n);
     m.n = m.n + 1;
     ENSURE(vrWire_GetGrid(&m, &g) != 0);
