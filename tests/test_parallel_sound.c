@@ -7,6 +7,7 @@
  * listen on the same URL).  The scene's impacts are checked against the
  * closed form of a dropped ball, so that equal events are right ones.
  * Marked netns: the runner makes a private network namespace first. */
+#include <stdlib.h>
 #include <string.h>
 #include <lcm/lcm.h>
 #include "test.h"
@@ -103,12 +104,14 @@ static int setup(void)
     return found && serial.n >= 10 ? 0 : -1;
 }
 
-static int matches_serial(int gps, const char *url)
+/* st: the run's stats, when not NULL */
+static int matches_serial(int gps, const char *url, vrStats *st)
 {
     static Sounds s;
     vrWorld *w = balls(gps, url);
     int k;
     ENSURE(run(w, &s, NULL, NULL) == 0);
+    if (st) vrWorld_GetStats(w, st);
     vrWorld_Destroy(w);
     ENSURE_MSG(s.n == serial.n, "%d workers on %s: %d sounds, serial %d", gps, url, s.n, serial.n);
     for (k = 0; k < s.n; k++)
@@ -120,8 +123,29 @@ static int matches_serial(int gps, const char *url)
 
 static int test_workers_make_the_serial_sounds_bit_for_bit(void)
 {
-    return matches_serial(1, "memq://") || matches_serial(2, "memq://") || matches_serial(1, UDPM)
-           || matches_serial(2, UDPM);
+    return matches_serial(1, "memq://", NULL) || matches_serial(2, "memq://", NULL)
+           || matches_serial(1, UDPM, NULL) || matches_serial(2, UDPM, NULL);
+}
+
+/* A worker killed in the middle of a frame that sounds twice (the thrown
+ * balls landing together), at the frame's second advance, after its first
+ * sound: the frame is done again from its start by the other worker, and
+ * its sounds are neither lost nor made twice. */
+static int test_a_killed_worker_changes_no_sound(void)
+{
+    char kill[32];
+    vrStats st;
+    int k, r;
+    for (k = 1; k < serial.n && serial.frame[k] != serial.frame[k - 1]; k++) continue;
+    ENSURE_MSG(k < serial.n, "no frame of the serial run sounds twice");
+    snprintf(kill, sizeof kill, "1:%ld:2", serial.frame[k] + 1);   /* a worker counts frames from 1 */
+    setenv("VROC_FAULT_KILL", kill, 1);
+    r = matches_serial(2, UDPM, &st);
+    unsetenv("VROC_FAULT_KILL");
+    if (r) return r;
+    ENSURE_MSG(st.gp_copies[1] == 0 && st.gp_copies[0] > 0, "worker 1 (killed at %s) still holds %lld copies", kill,
+               (long long)st.gp_copies[1]);
+    return 0;
 }
 
 /* what the subscriber heard is the events, in order, bit for bit */
@@ -170,6 +194,7 @@ static int test_trackers_on_the_workers_url_do_not_repeat_them(void) { return pu
 
 static const vrTest tests[] = {
     TEST(test_workers_make_the_serial_sounds_bit_for_bit),
+    TEST(test_a_killed_worker_changes_no_sound),
     TEST(test_workers_on_udpm_publish_the_sounds),
     TEST(test_trackers_on_the_workers_url_do_not_repeat_them),
 };
