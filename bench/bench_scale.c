@@ -4,7 +4,7 @@
  * a room without gravity and without speed clamps, N = 2,000, 5,000 and
  * 10,000 in rooms of 35, 47.6 and 60 m (the same density).  Each size runs
  * in a fresh child process (fork from this small one), so that its peak
- * resident set (getrusage ru_maxrss) is its own: built, started, then
+ * resident set (VmHWM, tests/peak_mem.h) is its own: built, started, then
  * FRAMES frames timed by the world's own sim_ms (simulation only, not the
  * build).  The figure is the median of RUNS children (the counts are
  * deterministic, only the times vary).
@@ -20,11 +20,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include "vroc.h"
+#include "../tests/peak_mem.h"
 
 #define FRAMES 20
 #define RUNS 3
@@ -69,7 +69,6 @@ static Result measure(int n, double side, int gps)
     Result r;
     vrWorld *w = room(n, side, gps);
     vrStats a, b;
-    struct rusage ru;
     char err[256];
     memset(&r, 0, sizeof r);
     if (!w) return r;
@@ -80,12 +79,11 @@ static Result measure(int n, double side, int gps)
         return r;
     }
     vrWorld_GetStats(w, &b);
-    getrusage(RUSAGE_SELF, &ru);
     r.ok = 1;
     r.frames = (double)(b.frames - a.frames);
     r.sim_ms = b.sim_ms - a.sim_ms;
     r.fps = r.sim_ms > 0 ? 1000.0 * r.frames / r.sim_ms : 0;
-    r.peak_mb = ru.ru_maxrss / 1024.0;
+    r.peak_mb = (double)vrPeakMem_Kb(0) / 1024.0;
     r.live_pairs = b.live_pairs;
     r.pairs = b.pairs;
     r.objects = b.objects;

@@ -44,6 +44,12 @@ typedef int vrObjectId;
 #define VR_SCALE_MIN 1e-6         /* a polyhedron's scale factors */
 #define VR_SCALE_MAX 1e6
 #define VR_FRAME_STEPS_MAX 1000000 /* internal steps in one frame: more is refused */
+/* The bound no frame passes however its spans' grids fall: twice the
+ * frame's, because a frame checked at its start may still grow inside it
+ * (speeds an event gives are capped, but a span's grid rounds up; loop.c),
+ * and a worker refuses a grid longer than this, which no coordinator sends
+ * (parallel/wire.c). */
+#define VR_FRAME_STEPS_HARD_MAX (2 * VR_FRAME_STEPS_MAX)
 
 typedef enum vrObjectType { VR_SPHERE, VR_CUBE, VR_SUPERQUADRIC, VR_POLYHEDRON } vrObjectType;
 
@@ -310,6 +316,7 @@ int vrTrackFile_Read(const char *path, vrTrackSampleFn fn, void *user, char *err
 void vrView_FromHead(vrView *view, const vrTrackerSample *head);
 
 /* ---- collision sounds (SPEC 8) ----------------------------------------- */
+#define VR_SOUND_DEFAULT "bounce"   /* the built-in sound, when collision_sound is empty */
 /* One impact faster than sound_min_speed: its time, volume
  * (collision_vol * min(1, speed / 10 m/s)), the point where its impulse
  * acts, its approach speed and the pair.  At most one per pair per 0.1 s. */

@@ -5,8 +5,6 @@
 #include <string.h>
 #include "commands.h"
 
-#define SH_SOUND_DEFAULT "bounce"   /* the built-in, when collision_sound is empty */
-
 void sh_sound_close(Shell *sh)
 {
     if (sh->sound_log) fclose(sh->sound_log);
@@ -49,7 +47,7 @@ int sh_sound_frame(Shell *sh, char *err, size_t n)
     const vrSoundEvent *ev;
     const char *name = vrWorld_Settings(sh->world)->collision_sound;
     int k, count = vrWorld_FrameSounds(sh->world, &ev);
-    if (!name[0]) name = SH_SOUND_DEFAULT;
+    if (!name[0]) name = VR_SOUND_DEFAULT;
     if (sh->trackers && vrTrackers_PublishSounds(sh->trackers, ev, count, name) != 0) {
         snprintf(err, n, "cannot publish the sound events on VROC_SOUND");
         return -1;

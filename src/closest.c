@@ -29,23 +29,23 @@
  *
  * No static state: everything lives in the caller's cache and the stack.
  *   highest_face, closest_on_feature, steepest_edge   feature geometry
- *   Walk, to_other, vert_in_other    the pair, in side 0's frame
+ *   vrWalk, to_other, vert_in_other  the pair, in side 0's frame (closest_walk.h)
  *   vertex_vertex .. edge_edge       one step per pair of feature types
- *   walk_step, pair_points           the dispatch; a final pair's points
- *   find_piercing, find_contained,   the exhaustive search past the step cap
- *   nearest_pair, exhaustive
+ *   walk_step                        the dispatch
  *   walk_init, separated             a query's start; its check of the end
  *   pair_query                       the walk between two polyhedra
- * The walk against a point (sphere centres) is closest_point.c's.
+ * The exhaustive search past the step cap, with a final pair's points, is
+ * closest_exhaustive.c's; the walk against a point (sphere centres),
+ * closest_point.c's.
  */
 #include <stdlib.h>
 
-#include "closest.h"
+#include "closest_exhaustive.h"
 #include "polyhedron.h"
 #include "segment.h"
 #include "voronoi.h"
 
-enum { GO = VR_WALK_GO, DONE = VR_WALK_DONE, PENETRATING };
+enum { GO = VR_WALK_GO, DONE = VR_WALK_DONE, PENETRATING = VR_WALK_PENETRATING };
 
 /* The edge of vertex v along which dot(dir, .) rises fastest, by more than
  * tol per edge (so an edge parallel to a face plane is no way down); -1 if none. */
@@ -66,51 +66,23 @@ static int steepest_edge(const vrPolyhedron *p, int v, vec3 dir, double tol)
     return best;
 }
 
-/* ---- the walk between two polyhedra ------------------------------------- */
+/* ---- the walk between two polyhedra (its state: closest_walk.h) -------- */
 
-typedef struct Walk {
-    const vrPolyhedron *p[2];
-    mat33 R;             /* side 1's frame into side 0's: x0 = R x1 + t */
-    vec3 t;
-    vrFeature f[2];
-    double tol;
-    double slack2;       /* this step's largest region excess let pass as within tol, squared */
-    vec3 c[2];           /* closest points of the final pair, frame 0 */
-    double pen_dist;     /* on penetration: <= 0, and where (frame 0) */
-    vec3 pen_point;
-} Walk;
-
-/* x (a point, or with rotate_other a direction) from side i's frame into the other's */
-static inline vec3 to_other(const Walk *w, int i, vec3 x)
-{
-    return i ? vec3_add(mat33_mulv(&w->R, x), w->t) : mat33_tmulv(&w->R, vec3_sub(x, w->t));
-}
-static inline vec3 rotate_other(const Walk *w, int i, vec3 v) { return i ? mat33_mulv(&w->R, v) : mat33_tmulv(&w->R, v); }
-static inline vec3 in_frame0(const Walk *w, int i, vec3 x) { return i == 0 ? x : to_other(w, 1, x); }
-static inline vec3 vert_in_other(const Walk *w, int i, int v) { return to_other(w, i, w->p[i]->vert[v]); }
-
-static int move(Walk *w, int i, vrFeature f)
+static int move(vrWalk *w, int i, vrFeature f)
 {
     w->f[i] = f;
     return GO;
 }
 
-static int penetrating(Walk *w, double dist, vec3 at_frame0)
-{
-    w->pen_dist = dist;
-    w->pen_point = at_frame0;
-    return PENETRATING;
-}
-
 /* the pair is closest (Theorem 1); c0, c1 its closest points, frame 0 */
-static int done(Walk *w, vec3 c0, vec3 c1)
+static int done(vrWalk *w, vec3 c0, vec3 c1)
 {
     w->c[0] = c0;
     w->c[1] = c1;
     return DONE;
 }
 
-static int vertex_vertex(Walk *w)
+static int vertex_vertex(vrWalk *w)
 {
     vrFeature nbr;
     vec3 x1 = vert_in_other(w, 1, w->f[1].index);
@@ -121,7 +93,7 @@ static int vertex_vertex(Walk *w)
 }
 
 /* vertex on side i, edge on side 1-i */
-static int vertex_edge(Walk *w, int i)
+static int vertex_edge(vrWalk *w, int i)
 {
     int j = 1 - i;
     vec3 x = vert_in_other(w, i, w->f[i].index), q, qi;
@@ -138,7 +110,7 @@ static int vertex_edge(Walk *w, int i)
  * plane and no edge of it climbs toward the plane.  Either every face plane
  * of j has x beneath it (penetration), or the walk jumps to the face whose
  * plane x is farthest above. */
-static int local_minimum(Walk *w, int i, vec3 x)
+static int local_minimum(vrWalk *w, int i, vec3 x)
 {
     int j = 1 - i;
     double smax;
@@ -148,7 +120,7 @@ static int local_minimum(Walk *w, int i, vec3 x)
 }
 
 /* vertex on side i, face on side 1-i */
-static int vertex_face(Walk *w, int i)
+static int vertex_face(vrWalk *w, int i)
 {
     int j = 1 - i, v = w->f[i].index, f = w->f[j].index, e;
     const vrPolyhedron *q = w->p[j];
@@ -189,7 +161,7 @@ static vrFeature nearest_boundary_edge(const vrPolyhedron *p, int f, vec3 t, vec
  * the edge is an endpoint inside the prism, or the edge pierces the face.
  * Where V-Clip moves to the clipping plane's edge, we move to the boundary
  * edge nearest to E: the distance is unchanged by construction. */
-static int edge_face(Walk *w, int i)
+static int edge_face(vrWalk *w, int i)
 {
     int j = 1 - i, e = w->f[i].index, f = w->f[j].index;
     const vrPolyhedron *q = w->p[j];
@@ -210,7 +182,7 @@ static int edge_face(Walk *w, int i)
     return hi == 1 ? move(w, i, vrFeature_Make(VR_VERTEX, ev[1])) : move(w, j, nearest_boundary_edge(q, f, t, h));
 }
 
-static int edge_edge(Walk *w)
+static int edge_edge(vrWalk *w)
 {
     const int *e0 = w->p[0]->edge_v[w->f[0].index], *e1 = w->p[1]->edge_v[w->f[1].index];
     vec3 a0 = w->p[0]->vert[e0[0]], a1 = w->p[0]->vert[e0[1]];
@@ -225,7 +197,7 @@ static int edge_edge(Walk *w)
     return done(w, c0, c1);
 }
 
-static int walk_step(Walk *w)
+static int walk_step(vrWalk *w)
 {
     w->slack2 = 0;
     switch (w->f[0].type * 3 + w->f[1].type) {
@@ -240,107 +212,6 @@ static int walk_step(Walk *w)
     default: /* face-face: the walk never makes it; from a foreign cache, take a vertex */
         return move(w, 0, vrFeature_Make(VR_VERTEX, w->p[0]->face_vert[w->p[0]->face_start[w->f[0].index]]));
     }
-}
-
-/* closest points (frame 0) of a final pair: vertex-anything or edge-edge */
-static void pair_points(const Walk *w, vec3 *c0, vec3 *c1)
-{
-    vec3 c[2];
-    int i, j;
-    if (w->f[0].type == VR_EDGE && w->f[1].type == VR_EDGE) {
-        const int *e0 = w->p[0]->edge_v[w->f[0].index], *e1 = w->p[1]->edge_v[w->f[1].index];
-        vec3 a0 = w->p[0]->vert[e0[0]], a1 = w->p[0]->vert[e0[1]];
-        vec3 b0 = vert_in_other(w, 1, e1[0]), b1 = vert_in_other(w, 1, e1[1]);
-        double s, t;
-        vrSegment_ClosestParams(a0, a1, b0, b1, &s, &t);
-        *c0 = vec3_lerp(a0, a1, s);
-        *c1 = vec3_lerp(b0, b1, t);
-        return;
-    }
-    i = w->f[0].type == VR_VERTEX ? 0 : 1;
-    j = 1 - i;
-    c[i] = in_frame0(w, i, w->p[i]->vert[w->f[i].index]);
-    c[j] = in_frame0(w, j, vrVoronoi_ClosestOnFeature(w->p[j], w->f[j], vert_in_other(w, i, w->f[i].index)));
-    *c0 = c[0];
-    *c1 = c[1];
-}
-
-/* ---- exhaustive search: when the step cap is hit ------------------------ */
-
-/* an edge of side i piercing a face of side 1-i */
-static int find_piercing(Walk *w, int i)
-{
-    int j = 1 - i, e, f;
-    const vrPolyhedron *p = w->p[i], *q = w->p[j];
-    for (e = 0; e < p->ne; e++) {
-        vec3 t = vert_in_other(w, i, p->edge_v[e][0]), h = vert_in_other(w, i, p->edge_v[e][1]);
-        for (f = 0; f < q->nf; f++) {
-            double lo, hi, dl, du;
-            if (!vrVoronoi_ClipToFace(q, f, t, h, &lo, &hi)) continue;
-            dl = vrPolyhedron_FaceHeight(q, f, vec3_lerp(t, h, lo));
-            du = vrPolyhedron_FaceHeight(q, f, vec3_lerp(t, h, hi));
-            if ((dl < 0 && du > 0) || (dl > 0 && du < 0)) {
-                w->f[i] = vrFeature_Make(VR_EDGE, e);
-                w->f[j] = vrFeature_Make(VR_FACE, f);
-                return penetrating(w, 0, in_frame0(w, j, vec3_lerp(t, h, lo + (hi - lo) * dl / (dl - du))));
-            }
-        }
-    }
-    return GO;
-}
-
-/* vertex 0 of side i inside side 1-i (one polyhedron inside the other) */
-static int find_contained(Walk *w, int i)
-{
-    int j = 1 - i, f;
-    vec3 x = vert_in_other(w, i, 0);
-    for (f = 0; f < w->p[j]->nf; f++)
-        if (vrPolyhedron_FaceHeight(w->p[j], f, x) > 0) return GO;
-    w->f[i] = vrFeature_Make(VR_VERTEX, 0);
-    w->f[j] = vrFeature_Make(VR_FACE, 0);
-    return penetrating(w, 0, in_frame0(w, j, x));
-}
-
-/* the separated minimum is attained by a vertex over a face or by two edges */
-static void nearest_pair(Walk *w)
-{
-    double best = HUGE_VAL;
-    int i, v, f, e0, e1;
-    for (i = 0; i < 2; i++) {
-        const vrPolyhedron *q = w->p[1 - i];
-        for (v = 0; v < w->p[i]->nv; v++) {
-            vec3 x = vert_in_other(w, i, v);
-            for (f = 0; f < q->nf; f++) {
-                double h = vrPolyhedron_FaceHeight(q, f, x);
-                if (h < 0 || h >= best || !vrVoronoi_InPrism(q, f, x)) continue;
-                best = h;
-                w->f[i] = vrFeature_Make(VR_VERTEX, v);
-                w->f[1 - i] = vrFeature_Make(VR_FACE, f);
-            }
-        }
-    }
-    for (e0 = 0; e0 < w->p[0]->ne; e0++)
-        for (e1 = 0; e1 < w->p[1]->ne; e1++) {
-            vec3 a0 = w->p[0]->vert[w->p[0]->edge_v[e0][0]], a1 = w->p[0]->vert[w->p[0]->edge_v[e0][1]];
-            vec3 b0 = vert_in_other(w, 1, w->p[1]->edge_v[e1][0]), b1 = vert_in_other(w, 1, w->p[1]->edge_v[e1][1]);
-            double s, t, d;
-            vrSegment_ClosestParams(a0, a1, b0, b1, &s, &t);
-            d = vec3_dist(vec3_lerp(a0, a1, s), vec3_lerp(b0, b1, t));
-            if (d >= best) continue;
-            best = d;
-            w->f[0] = vrFeature_Make(VR_EDGE, e0);
-            w->f[1] = vrFeature_Make(VR_EDGE, e1);
-        }
-}
-
-static int exhaustive(Walk *w)
-{
-    int i, r;
-    for (i = 0; i < 2; i++)
-        if ((r = find_piercing(w, i)) != GO || (r = find_contained(w, i)) != GO) return r;
-    nearest_pair(w);
-    pair_points(w, &w->c[0], &w->c[1]);
-    return DONE;
 }
 
 /* ---- entry points ------------------------------------------------------- */
@@ -359,7 +230,7 @@ static mat33 relative_rotation(const mat33 *ra, const mat33 *rb)
     return r;
 }
 
-static void walk_init(Walk *w, const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb,
+static void walk_init(vrWalk *w, const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb,
                       const vrWalkCache *cache)
 {
     double scale;
@@ -380,7 +251,7 @@ static void walk_init(Walk *w, const vrPolyhedron *a, const vrPose *pa, const vr
 /* the distance between the bodies is at least this: their extents along
  * the unit direction u (frame 0) from a to b, each climbed from a vertex of
  * its final feature (usually no step) */
-static double separation_along(const Walk *w, vec3 u)
+static double separation_along(const vrWalk *w, vec3 u)
 {
     vec3 u1 = vec3_neg(rotate_other(w, 0, u));
     int top_a = vrPolyhedron_Climb(w->p[0], u, vrFeature_Vertex(w->p[0], w->f[0]), NULL);
@@ -390,7 +261,7 @@ static double separation_along(const Walk *w, vec3 u)
 
 /* two edges' unit cross product, pointing along d; zero for edges near
  * parallel */
-static vec3 edges_normal(const Walk *w, vec3 d)
+static vec3 edges_normal(const vrWalk *w, vec3 d)
 {
     const vrPolyhedron *a = w->p[0], *b = w->p[1];
     const int *ea = a->edge_v[w->f[0].index], *eb = b->edge_v[w->f[1].index];
@@ -413,7 +284,7 @@ static vec3 edges_normal(const Walk *w, vec3 d)
  * excess let pass, or rounding, could tilt it that far, each body's extent
  * along it is climbed; its rounding too grows as 1/g, so two edges' cross
  * product, exact, is tried as well. */
-static int separated(const Walk *w)
+static int separated(const vrWalk *w)
 {
     vec3 d = vec3_sub(w->c[1], w->c[0]), n;
     double g = vec3_len(d), want = g - 0.1 * w->tol, size = 2 * (w->p[0]->r_out + w->p[1]->r_out);
@@ -430,17 +301,17 @@ static int separated(const Walk *w)
 static double pair_query(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb,
                          vrWalkCache *cache, vec3 *ca, vec3 *cb, int *steps, int *penetrating_out, int at_once)
 {
-    Walk w;
+    vrWalk w;
     int n = 0, r = GO;
     walk_init(&w, a, pa, b, pb, cache);
-    if (at_once) r = exhaustive(&w);
+    if (at_once) r = vrWalk_Exhaustive(&w);
     while (r == GO && (r = walk_step(&w)) == GO)
         if (++n >= 8 && n >= vrClosest_StepCap(a) + vrClosest_StepCap(b)) {
-            r = exhaustive(&w);
+            r = vrWalk_Exhaustive(&w);
             if (cache) cache->fallbacks++;
         }
     if (r == DONE && !at_once && !separated(&w)) {
-        r = exhaustive(&w);
+        r = vrWalk_Exhaustive(&w);
         if (cache) cache->fallbacks++;
     }
     if (cache) {

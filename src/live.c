@@ -21,11 +21,10 @@
 #include <lcm/lcm.h>
 #include "vroc.h"
 #include "vroc_tracker_t.h"
-#include "vroc_sound_t.h"
+#include "sound_lcm.h"
 
 #define VR_CH_HEAD "VROC_HEAD"
 #define VR_CH_HAND "VROC_HAND"
-#define VR_CH_SOUND "VROC_SOUND"
 
 typedef struct Device {
     int active;              /* sending: waited for */
@@ -35,6 +34,7 @@ typedef struct Device {
 
 struct vrTrackers {
     lcm_t *lcm;
+    char url[256];           /* the statement's */
     vrWorld *w;
     double t0;               /* simulation time of track time 0 */
     lcm_subscription_t *sub[2];
@@ -114,6 +114,7 @@ int vrTrackers_Open(vrTrackers **out, vrWorld *w, const char *url, char *err, si
         snprintf(err, n, "cannot open LCM URL %s (for udpm: is there a multicast route?)", url);
         return -1;
     }
+    snprintf(tr->url, sizeof tr->url, "%s", url);
     tr->w = w;
     tr->t0 = vrWorld_Time(w);
     tr->sub[0] = lcm_subscribe(tr->lcm, VR_CH_HEAD, on_head, tr);
@@ -187,18 +188,11 @@ int vrTrackers_WaitFirst(vrTrackers *tr, double deadline)
 
 long long vrTrackers_Refused(const vrTrackers *tr) { return tr->refused; }
 
+/* Workers on the same network URL publish the sounds themselves
+ * (parallel/sgp.c): a listener there would hear each event twice. */
 int vrTrackers_PublishSounds(vrTrackers *tr, const vrSoundEvent *ev, int n, const char *sound)
 {
-    int k;
-    for (k = 0; k < n; k++) {
-        vroc_sound_t m;
-        int i;
-        m.t = ev[k].t;
-        m.sound = (char *)sound;
-        m.volume = ev[k].volume;
-        for (i = 0; i < 3; i++) m.position[i] = ev[k].position[i];
-        m.speed = ev[k].speed;
-        if (vroc_sound_t_publish(tr->lcm, VR_CH_SOUND, &m) != 0) return -1;
-    }
-    return 0;
+    const vrSettings *s = vrWorld_Settings(tr->w);
+    if (s->gps > 0 && strncmp(s->lcm_url, "memq://", 7) != 0 && strcmp(s->lcm_url, tr->url) == 0) return 0;
+    return vrSounds_Publish(tr->lcm, ev, n, sound);
 }

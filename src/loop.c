@@ -131,9 +131,7 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
         vrEvent ev;
         int r;
         span_grid(w, f->ts, end, f->T, p, &g);
-        /* twice the frame's bound: speeds an event gives are capped, but
-         * a span's grid rounds up */
-        if (too_many_steps(w, &g, (double)w->subframes, 2.0 * VR_FRAME_STEPS_MAX, err, n) != 0) return -1;
+        if (too_many_steps(w, &g, (double)w->subframes, VR_FRAME_STEPS_HARD_MAX, err, n) != 0) return -1;
         r = vrOwners_Of(w)->first_event(w, &g, f->instant < VR_INSTANT_MAX, &ev, err, n);
         if (r != 1) {
             if (r == 0) w->subframes += g.n;

@@ -9,8 +9,7 @@
  * come in.  A point within 1e-3 of the tolerance of the hull is dropped (it
  * changes nothing worth a vertex).
  *   push, push_horizon       growing arrays (out of memory: h->oom)
- *   new_face, set_plane      a triangle with its normal and height filter
- *   height, assign           a point's height over a face; its conflict list
+ *   (faces)                  a new face, its height filter, the conflict lists: quickhull_faces.c
  *   sees, find_horizon       the faces the eye sees, and their horizon
  *   build_cone, add_point    one step
  *   initial_simplex          the first tetrahedron, from extreme points
@@ -24,38 +23,7 @@
 #include "orient.h"
 #include "polyhedron.h"
 #include "quickhull.h"
-
-typedef struct IntVec { int *a; int n, cap; } IntVec;
-
-enum { FACE_ALIVE, FACE_VISIBLE, FACE_FREE };
-
-typedef struct Face {
-    int v[3];        /* counter-clockwise seen from outside */
-    int nb[3];       /* nb[i]: the face across the edge v[i] -> v[i+1] */
-    int head;        /* first point of its conflict list, -1 if none */
-    int far;         /* its farthest conflict point */
-    double fardist;  /* orient() of far */
-    double minout;   /* orient() of a point drop above it: less is not kept */
-    vec3 n, nabs;    /* (v1-v0) x (v2-v0) as computed, and the sums of the
-                        magnitudes of its products: the height filter */
-    int stamp;       /* the step that last tested it against the eye */
-    int state;
-} Face;
-
-typedef struct Horizon { int a, b, out; } Horizon; /* edge a->b of a seen face; out: the unseen face */
-
-typedef struct Hull {
-    const vec3 *pts;
-    int n;
-    int *next;       /* conflict lists: the next point above the same face */
-    Face *face;
-    int nface, capface;
-    IntVec freeface, pending, visible, orphans, cone, dfs;
-    Horizon *hz;
-    int nhz, caphz;
-    double drop;     /* points within this of the hull are dropped */
-    int step, oom;
-} Hull;
+#include "quickhull_faces.h"
 
 static void push(Hull *h, IntVec *v, int x)
 {
@@ -75,116 +43,6 @@ static void push_horizon(Hull *h, int a, int b, int out)
     h->hz[h->nhz].a = a;
     h->hz[h->nhz].b = b;
     h->hz[h->nhz++].out = out;
-}
-
-static void set_plane(Face *f, vec3 a, vec3 b, vec3 c)
-{
-    vec3 u = vec3_sub(b, a), v = vec3_sub(c, a);
-    f->n = vec3_cross(u, v);
-    f->nabs = vec3_make(fabs(u.y * v.z) + fabs(u.z * v.y), fabs(u.z * v.x) + fabs(u.x * v.z),
-                        fabs(u.x * v.y) + fabs(u.y * v.x));
-}
-
-/* a face (a, b, c) with no neighbours yet; -1 when out of memory */
-static int new_face(Hull *h, int a, int b, int c)
-{
-    Face *f;
-    int id;
-    if (h->freeface.n > 0) {
-        id = h->freeface.a[--h->freeface.n];
-    } else {
-        if (vrGrow((void **)&h->face, &h->capface, h->nface + 1, sizeof *h->face) != 0) {
-            h->oom = 1;
-            return -1;
-        }
-        id = h->nface++;
-    }
-    f = &h->face[id];
-    f->v[0] = a;
-    f->v[1] = b;
-    f->v[2] = c;
-    f->nb[0] = f->nb[1] = f->nb[2] = -1;
-    f->head = f->far = -1;
-    f->fardist = 0;
-    set_plane(f, h->pts[a], h->pts[b], h->pts[c]);
-    f->minout = h->drop * vec3_len(f->n);
-    f->stamp = 0;
-    f->state = FACE_ALIVE;
-    return id;
-}
-
-static double face_orient(const Hull *h, int f, int pt)
-{
-    const int *v = h->face[f].v;
-    return vrOrient(h->pts[v[0]], h->pts[v[1]], h->pts[v[2]], h->pts[pt]);
-}
-
-/* n.(p - v0): orient() from the face's stored normal, with *eb bounding its
- * error (each of the eight roundings on the way is at most u relative to
- * the magnitudes summed in nabs.|p - v0|; 16u leaves room) */
-static double height(const Hull *h, const Face *F, int pt, double *eb)
-{
-    vec3 d = vec3_sub(h->pts[pt], h->pts[F->v[0]]);
-    *eb = 8 * DBL_EPSILON * (F->nabs.x * fabs(d.x) + F->nabs.y * fabs(d.y) + F->nabs.z * fabs(d.z));
-    return vec3_dot(F->n, d);
-}
-
-static void add_conflict(Hull *h, int f, int pt, double d)
-{
-    Face *F = &h->face[f];
-    h->next[pt] = F->head;
-    F->head = pt;
-    if (F->far < 0 || d > F->fardist) {
-        F->far = pt;
-        F->fardist = d;
-    }
-}
-
-/* does pt, seen along the normal of face F, fall on its triangle?  A
- * sliver's normal is mostly rounding (its products cancel): no answer */
-static int over_triangle(const Hull *h, const Face *F, int pt)
-{
-    vec3 p = h->pts[pt];
-    int i;
-    if (vec3_maxabs(F->n) <= 1e-6 * vec3_maxabs(F->nabs)) return 0;
-    for (i = 0; i < 3; i++) {
-        vec3 a = h->pts[F->v[i]], b = h->pts[F->v[i == 2 ? 0 : i + 1]];
-        if (vec3_dot(vec3_cross(vec3_sub(b, a), vec3_sub(p, a)), F->n) < 0) return 0;
-    }
-    return 1;
-}
-
-/* Puts pt in the conflict list of one of faces[0..n) (the new faces of a
- * step, trying faces[*hint] first: neighbouring points share faces) or drops
- * it.  It is dropped when it is above none of them (Barber et al.: then it
- * is inside), or when it lies within drop of one of their triangles (then it
- * is within drop of the hull: a small height alone would not say so, the
- * point may be far out along the face's plane).  So points on a flat within
- * rounding go at once, without exact arithmetic. */
-static void assign(Hull *h, int pt, const int *faces, int n, int *hint)
-{
-    int k, above = -1;
-    double dabove = 0;
-    for (k = 0; k < n; k++) {
-        int at = *hint + k < n ? *hint + k : *hint + k - n, f = faces[at];
-        const Face *F = &h->face[f];
-        double eb, d = height(h, F, pt, &eb);
-        if (d - F->minout > eb) {
-            add_conflict(h, f, pt, d);
-            *hint = at;
-            return;
-        }
-        if (fabs(d) <= F->minout + eb && over_triangle(h, F, pt)) return;
-        if (d > eb && above < 0) {
-            above = f;
-            dabove = d;
-        }
-    }
-    for (k = 0; k < n && above < 0; k++) { /* the sign too close to call: exactly */
-        double eb, d = height(h, &h->face[faces[k]], pt, &eb);
-        if (fabs(d) <= eb && face_orient(h, faces[k], pt) > 0) above = faces[k];
-    }
-    if (above >= 0) add_conflict(h, above, pt, dabove);
 }
 
 /* the index of the edge of face f whose neighbour is g */
@@ -259,7 +117,7 @@ static void build_cone(Hull *h, int eye)
     h->cone.n = 0;
     for (k = 0; k < nh; k++) {
         Horizon z = h->hz[k];
-        int f = new_face(h, z.a, z.b, eye);
+        int f = vrQuickhull_NewFace(h, z.a, z.b, eye);
         Face *out;
         if (f < 0) return;
         push(h, &h->cone, f);
@@ -294,7 +152,7 @@ static int add_point(Hull *h, int f0)
     }
     build_cone(h, eye);
     if (h->oom) return -1;
-    for (k = 0; k < h->orphans.n; k++) assign(h, h->orphans.a[k], h->cone.a, h->cone.n, &hint);
+    for (k = 0; k < h->orphans.n; k++) vrQuickhull_Assign(h, h->orphans.a[k], h->cone.a, h->cone.n, &hint);
     for (k = 0; k < h->cone.n; k++)
         if (h->face[h->cone.a[k]].head >= 0) push(h, &h->pending, h->cone.a[k]);
     return h->oom ? -1 : 0;
@@ -358,14 +216,14 @@ static int initial_simplex(Hull *h, double tolabs, char *err, size_t errlen)
         b = c;
         c = i;
     }
-    all[0] = new_face(h, a, b, c);
-    all[1] = new_face(h, b, a, d);
-    all[2] = new_face(h, c, b, d);
-    all[3] = new_face(h, a, c, d);
+    all[0] = vrQuickhull_NewFace(h, a, b, c);
+    all[1] = vrQuickhull_NewFace(h, b, a, d);
+    all[2] = vrQuickhull_NewFace(h, c, b, d);
+    all[3] = vrQuickhull_NewFace(h, a, c, d);
     if (h->oom) return vrGeom_Fail(err, errlen, "out of memory");
     for (f = 0; f < 4; f++) memcpy(h->face[all[f]].nb, nb[f], sizeof nb[f]);
     for (i = 0; i < h->n; i++)
-        if (i != a && i != b && i != c && i != d) assign(h, i, all, 4, &hint);
+        if (i != a && i != b && i != c && i != d) vrQuickhull_Assign(h, i, all, 4, &hint);
     for (f = 0; f < 4; f++)
         if (h->face[f].head >= 0) push(h, &h->pending, f);
     return 0;

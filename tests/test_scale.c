@@ -10,13 +10,13 @@
 #define _DEFAULT_SOURCE
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
 #include <stdio.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include "test.h"
 #include "vroc.h"
 #include "scene.h"
+#include "peak_mem.h"
 
 #define BIG 10000
 
@@ -95,28 +95,11 @@ static int test_heap_on_and_off_agree_at_10000_objects_with_edits(void)
     return 0;
 }
 
-/* the peak memory (kB, wait4's ru_maxrss) of a fresh vroc ($VROC_BUILD/vroc,
- * as tests/run.sh sets it) that builds a room of n objects and flies it 3
- * frames: a process of its own, so that the figure is its own; -1 on
- * failure (no vroc is a failure, not a skip) */
-/* the peak resident memory (kB) of a vroc that ran a room of n objects:
- * its VmHWM, read while it waits for more input after the room's `stats`.
- * Not the child's rusage: Linux carries a process's peak across fork and
- * exec, so a child of this runner (a gigabyte by then, under ASan) would
- * report the runner's. */
-static long vm_hwm_kb(pid_t pid)
-{
-    char path[64], line[256];
-    long kb = -1;
-    FILE *f;
-    snprintf(path, sizeof path, "/proc/%ld/status", (long)pid);
-    if (!(f = fopen(path, "r"))) return -1;
-    while (fgets(line, sizeof line, f))
-        if (strncmp(line, "VmHWM:", 6) == 0) kb = strtol(line + 6, NULL, 10);
-    fclose(f);
-    return kb;
-}
-
+/* the peak resident memory (kB) of a fresh vroc ($VROC_BUILD/vroc, as
+ * tests/run.sh sets it) that builds a room of n objects and flies it 3
+ * frames: its VmHWM (peak_mem.h), read while it waits for more input
+ * after the room's `stats`; -1 on failure (no vroc is a failure, not a
+ * skip) */
 static long room_kb(int n, double side)
 {
     const char *build = getenv("VROC_BUILD");
@@ -141,7 +124,7 @@ static long room_kb(int n, double side)
                     "max_frames = 0\nroom = %.17g\nrandom %d\nstart\nstep 3\nstats\n", side, n);
         fflush(to);
         while (!seen && fgets(line, sizeof line, from)) seen = strncmp(line, "frames=", 7) == 0;
-        if (seen) kb = vm_hwm_kb(pid);
+        if (seen) kb = vrPeakMem_Kb(pid);
     }
     if (to) fclose(to);
     else close(in[1]);

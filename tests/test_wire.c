@@ -16,7 +16,7 @@
 #include "../tools/fuzz/lcm_records.h"
 
 #define FRAME_NSTATES_AT 74   /* hash, run, seq, t (8 each), grid (40), two int8 */
-#define EARLIEST_STRING_AT 70 /* hash ... noverlap (70 bytes), with noverlap = 0 */
+#define EARLIEST_STRING_AT 102 /* hash ... noverlap (102 bytes: approach and point are 32), with noverlap = 0 */
 
 static void put_be32(unsigned char *b, unsigned v)
 {
@@ -141,7 +141,7 @@ static int test_grids_past_a_frames_steps_are_refused(void)
     vroc_grid_t m;
     vrGrid g;
     memset(&m, 0, sizeof m);
-    m.t0 = 0, m.T = 0.01, m.frame_T = 0.01, m.n = 2 * (int64_t)VR_FRAME_STEPS_MAX, m.h = m.T / (double)m.n;
+    m.t0 = 0, m.T = 0.01, m.frame_T = 0.01, m.n = (int64_t)VR_FRAME_STEPS_HARD_MAX, m.h = m.T / (double)m.n;
     ENSURE(vrWire_GetGrid(&m, &g) == 0 && g.n == m.n);
     m.n = m.n + 1;
     ENSURE(vrWire_GetGrid(&m, &g) != 0);

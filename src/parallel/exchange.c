@@ -60,7 +60,8 @@ static void count_malformed(vrSgp *s) { s->malformed++; }
 static void take_earliest(vrSgp *s, const vroc_earliest_t *m)
 {
     vrGpInfo *g = sender(s, m->run, m->seq, m->gp, WAIT_EARLIEST);
-    if (g && m->found && (!isfinite(m->t) || m->kind <= VR_EV_NONE || m->kind > VR_EV_PUSHOUT)) {
+    if (g && m->found && (!isfinite(m->t) || m->kind <= VR_EV_NONE || m->kind > VR_EV_PUSHOUT || !isfinite(m->approach)
+                          || !isfinite(m->point[0]) || !isfinite(m->point[1]) || !isfinite(m->point[2]))) {
         s->malformed++;
         g = NULL;
     }
@@ -70,6 +71,8 @@ static void take_earliest(vrSgp *s, const vroc_earliest_t *m)
     g->t = m->t;
     g->order = m->order;
     g->kind = m->kind;
+    g->approach = m->approach;
+    g->point = vec3_make(m->point[0], m->point[1], m->point[2]);
     g->now.checks = m->checks;
     g->now.heap_pops = m->heap_pops;
     g->copies = m->copies;

@@ -15,7 +15,8 @@
  *   recover / snapshot   the frame start kept, and the frame redone from it
  *   encode_frame_start   the span's first request; encode_forward the others
  *   earliest_of_all      the first event of all, by (time, pair order)
- *   sgp_*                the owner set's operations
+ *   sgp_*                the owner set's operations; sgp_end_frame also
+ *                        publishes the frame's sounds on VROC_SOUND (SPEC 8)
  */
 #include <stdlib.h>
 #include <string.h>
@@ -24,6 +25,7 @@
 #include "sgp.h"
 #include "spawn.h"
 #include "wire.h"
+#include "sound_lcm.h"
 #include "vroc_advance_t.h"
 #include "vroc_contacts_t.h"
 #include "vroc_frame_start_t.h"
@@ -128,6 +130,8 @@ static int earliest_of_all(vrSgp *s, vrEvent *ev)
     ev->t = s->gp[best].t;
     ev->order = s->gp[best].order;
     ev->kind = s->gp[best].kind;
+    ev->approach = s->gp[best].approach;   /* the sound's (loop.c): the rest stays the responder's */
+    ev->c = s->gp[best].point;
     ev->a = (int)(ev->order >> 32);
     ev->b = (int)(ev->order & 0xffffffff);
     return 1;
@@ -137,6 +141,10 @@ static int sgp_first_event(vrWorld *w, const vrGrid *g, int allow, vrEvent *ev, 
 {
     vrSgp *s = w->sgp;
     int r;
+    if (s->sound_failed) {
+        s->sound_failed = 0;
+        return snprintf(err, n, "cannot publish the sound events on VROC_SOUND at %s", s->url), -1;
+    }
     s->seq++;
     s->error[0] = 0;
     if (!s->frame_open || s->frame_fresh) {
@@ -171,11 +179,18 @@ static int sgp_respond(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, s
     return vrSgp_AppendStates(up, &s->reply) == 0 ? 0 : (snprintf(err, n, "out of memory"), -1);
 }
 
+/* SPEC 8: workers on a network URL publish the frame's sounds on it
+ * (memq:// is this process's own: nobody could listen).  end_frame cannot
+ * fail, so a refusal fails the next frame. */
 static void sgp_end_frame(vrWorld *w, double T)
 {
+    vrSgp *s = w->sgp;
     (void)T;
-    w->sgp->frame_open = w->sgp->frame_fresh = 0;
-    w->sgp->snap_pending.n = 0;
+    s->frame_open = s->frame_fresh = 0;
+    s->snap_pending.n = 0;
+    if (strncmp(s->url, "memq://", 7) != 0
+        && vrSounds_Publish(s->link.lcm, w->sounds.ev, w->sounds.n, vrSounds_Name(&w->s)) != 0)
+        s->sound_failed = 1;
 }
 
 static int cmp_pair(const void *x, const void *y)

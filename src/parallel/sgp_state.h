@@ -31,6 +31,8 @@ typedef struct vrGpInfo {
     double t;
     long long order;
     int kind;
+    double approach;            /* and its n.u and point: what its sound is made of */
+    vec3 point;
     vrGpCounts now;             /* of its owner, as it last said */
     vrGpCounts before;          /* of the owners it had before: a setup makes a new one */
     int copies, pairs;
@@ -54,6 +56,7 @@ struct vrSgp {
     char error[256];
     int frame_open;
     int frame_fresh;            /* the frame opened with an island step: its frame_start not sent yet */
+    int sound_failed;           /* the last frame's sounds could not be published */
     vrUpdate snap, snap_pending;   /* the frame start, to redo the frame */
     long long snap_collisions, snap_island_steps, snap_island_contacts, snap_clamps;
     vrGpCounts snap_counts[VR_MAX_GPS];  /* each worker's counts then (before + now) */

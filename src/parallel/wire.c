@@ -233,16 +233,13 @@ void vrWire_PutGrid(vroc_grid_t *m, const vrGrid *g)
     m->frame_T = g->frame_T;
 }
 
-/* a grid of more steps than a frame may take (loop.c refuses a frame past
- * VR_FRAME_STEPS_MAX, and one that grows past twice that inside it) comes
- * from no coordinator: a fuzzed frame_start with a huge one kept a worker
- * looking ahead for minutes (make fuzz) */
-#define GRID_STEPS_MAX (2 * (int64_t)VR_FRAME_STEPS_MAX)
-
+/* a grid of more steps than a frame may take (VR_FRAME_STEPS_HARD_MAX)
+ * comes from no coordinator: a fuzzed frame_start with a huge one kept a
+ * worker looking ahead for minutes (make fuzz) */
 int vrWire_GetGrid(const vroc_grid_t *m, vrGrid *g)
 {
-    if (!isfinite(m->t0) || !isfinite(m->T) || !isfinite(m->h) || m->n < 0 || m->n > GRID_STEPS_MAX || m->T < m->t0
-        || !(m->frame_T >= m->T) || !isfinite(m->frame_T))
+    if (!isfinite(m->t0) || !isfinite(m->T) || !isfinite(m->h) || m->n < 0 || m->n > (int64_t)VR_FRAME_STEPS_HARD_MAX
+        || m->T < m->t0 || !(m->frame_T >= m->T) || !isfinite(m->frame_T))
         return -1;
     g->t0 = m->t0;
     g->T = m->T;

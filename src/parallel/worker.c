@@ -1,13 +1,9 @@
 /* worker.c — a GP: the thesis's Graphic Processor, a pair owner driven by
- * the SGP's messages (SPEC 5).  It holds copies of the objects of its pairs
- * in a table of its own (built from their definitions by the same code as
- * the SGP's, build.h, so every copy moves the same bits) and one vrOwner
- * over its pairs.
+ * the SGP's messages (SPEC 5).  What it holds (its objects' copies and
+ * one vrOwner over its pairs) is worker_hold.c's; its answers and
+ * heartbeats, worker_reply.c's; its state, worker_state.h.
  *
- *   fresh          a new request, or a repeat answered from the cache
- *   beat           a heartbeat while a long look-ahead keeps it busy
- *   apply_states   the SGP's states onto the bodies held here
- *   set_up         a setup's objects and pairs
+ *   look_ahead, check_overlaps   a span's first event; the overlaps of a check
  *   maybe_die      VROC_FAULT_KILL, for the tests of a dying worker
  *   take_*         a request of each kind (the VR_HANDLER callbacks)
  */
@@ -15,180 +11,16 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "build.h"
-#include "table.h"
-#include "worker.h"
+#include "worker_hold.h"
+#include "worker_reply.h"
 #include "wire.h"
 #include "vroc_advance_t.h"
 #include "vroc_candidates_t.h"
 #include "vroc_contacts_t.h"
-#include "vroc_earliest_t.h"
 #include "vroc_frame_start_t.h"
-#include "vroc_hello_t.h"
 #include "vroc_setup_t.h"
 #include "vroc_shutdown_t.h"
 #include "vroc_update_t.h"
-
-#define HELLO_MS 100.0      /* announcements while free, heartbeats while busy */
-/* A setup's object ids index the worker's table: a malformed one of 2^30
- * grew it for minutes (make fuzz).  Ids at or past this are refused. */
-#define MAX_ID (1 << 20)
-
-struct vrWorker {
-    vrLink *link;
-    long long nonce;
-    int forked;
-    pid_t parent;
-    int64_t run, last_seq, reply_seq;
-    int gp;
-    vrBuf reply;                  /* the last answer, for repeated requests */
-    const char *reply_channel;
-    vrTable objects;              /* the objects of its pairs, at the SGP's ids */
-    vrOwner *owner;
-    vrParams params;
-    vrEvent first;                /* the first event it last reported */
-    int has_first;
-    vrUpdate scratch;
-    int *ids;
-    int idcap;
-    long frames;
-    int kill_gp, kill_frame;      /* VROC_FAULT_KILL=gp:frame[:round] */
-    int kill_round, rounds;       /* ...at that frame's round-th advance (0: at its start) */
-    int silent, done;
-    double last_hello;
-    lcm_subscription_t *subs[6];
-};
-
-/* ---- answering ------------------------------------------------------------------ */
-
-static void answer(vrWorker *k, const char *channel, int64_t seq)
-{
-    k->reply_channel = channel;
-    k->reply_seq = seq;
-    vrLink_Publish(k->link, channel, k->reply.data, k->reply.len);
-}
-
-/* Is this request new?  A repeat is answered from the cache (the SGP lost
- * our answer or we lost its request), a stale or foreign one ignored. */
-static int fresh(vrWorker *k, int64_t run, int64_t seq)
-{
-    if (k->silent || run != k->run || seq < k->last_seq) return 0;
-    if (seq == k->last_seq) {
-        if (k->reply_seq == seq) vrLink_Publish(k->link, k->reply_channel, k->reply.data, k->reply.len);
-        return 0;
-    }
-    k->last_seq = seq;
-    return 1;
-}
-
-static void send_earliest(vrWorker *k, int64_t seq, int found, const vrEvent *ev,
-                          int noverlap, int32_t *a, int32_t *b, const char *error)
-{
-    vroc_earliest_t m;
-    vrOwnerStats os;
-    memset(&m, 0, sizeof m);
-    memset(&os, 0, sizeof os);
-    if (k->owner) vrOwner_Stats(k->owner, &os);
-    m.run = k->run;
-    m.seq = seq;
-    m.gp = k->gp;
-    m.found = (int8_t)found;
-    if (found) {
-        m.t = ev->t;
-        m.order = ev->order;
-        m.kind = (int8_t)ev->kind;
-    }
-    m.checks = os.checks;
-    m.heap_pops = os.heap_pops;
-    m.copies = k->owner ? vrOwner_BodyCount(k->owner) : 0;
-    m.noverlap = noverlap;
-    m.a = a;
-    m.b = b;
-    m.error = (char *)(error ? error : "");
-    if (VR_ENCODE(&k->reply, vroc_earliest_t, &m) == 0) answer(k, VR_CH_EARLIEST, seq);
-}
-
-/* heartbeat while a long look-ahead keeps us from answering */
-static void beat(void *ctx)
-{
-    vrWorker *k = ctx;
-    double now = vrLink_NowMs();
-    vroc_hello_t m;
-    vrBuf b = {NULL, 0, 0};
-    if (now - k->last_hello < HELLO_MS) return;
-    k->last_hello = now;
-    m.nonce = k->nonce;
-    m.pid = (int32_t)getpid();
-    m.run = k->run;
-    m.gp = k->gp;
-    m.seq = k->last_seq;
-    if (VR_ENCODE(&b, vroc_hello_t, &m) == 0) vrLink_Publish(k->link, VR_CH_HELLO, b.data, b.len);
-    vrBuf_Free(&b);
-}
-
-/* ---- state ---------------------------------------------------------------------------- */
-
-static int held(const vrWorker *k, int id)
-{
-    vrObject *o = vrTable_Get(&k->objects, id);
-    return o && o->built;
-}
-
-/* applies the SGP's states to the bodies held here; their pairs are
- * evaluated at the next span start */
-static int apply_states(vrWorker *k, const vroc_body_state_t *states, int n)
-{
-    int i, nid = 0;
-    k->scratch.n = 0;
-    if (vrWire_GetStates(states, n, 1 << 30, &k->scratch) != 0) return -1;
-    if (n > k->idcap) {
-        int *ni = realloc(k->ids, (size_t)n * sizeof *ni);
-        if (!ni) return -1;
-        k->ids = ni;
-        k->idcap = n;
-    }
-    for (i = 0; i < k->scratch.n; i++) {
-        const vrBodyState *st = &k->scratch.body[i];
-        if (!held(k, st->id)) continue;
-        vrBody_Apply(&vrTable_Get(&k->objects, st->id)->body, st, &k->params.flight);
-        k->ids[nid++] = st->id;
-    }
-    vrOwner_BodiesChanged(k->owner, k->ids, nid);
-    return 0;
-}
-
-/* the objects and pairs of a setup: built from definitions, placed at
- * their states, pairs settled from the poses or flagged */
-static int set_up(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
-{
-    int i;
-    if (vrWire_GetParams(&m->params, &k->params) != 0) return snprintf(err, n, "bad settings"), -1;
-    vrTable_Clear(&k->objects);
-    vrOwner_Free(k->owner);
-    k->owner = NULL;
-    for (i = 0; i < m->nbodies; i++) {
-        vrObjectDef d;
-        if (vrWire_GetDef(&m->defs[i], &d) != 0 || m->defs[i].id < 0 || m->defs[i].id >= MAX_ID)
-            return snprintf(err, n, "bad object definition"), -1;
-        if (vrTable_Put(&k->objects, m->defs[i].id, &d, m->defs[i].off, err, n) != 0) return -1;
-    }
-    for (i = 0; i < k->objects.n; i++)   /* placed: their states follow */
-        if (k->objects.obj[i] && vrObject_Ready(k->objects.obj[i], m->t, &k->params.flight, NULL, err, n) != 0) return -1;
-    k->owner = vrOwner_Create();
-    if (!k->owner) return snprintf(err, n, "out of memory"), -1;
-    vrOwner_SetParams(k->owner, &k->params);
-    vrOwner_SetProgress(k->owner, beat, k);
-    for (i = 0; i < m->nbodies; i++) {
-        vrObject *o = vrTable_Get(&k->objects, m->defs[i].id);
-        if (vrOwner_HoldBody(k->owner, o->body.id, &o->body) != 0) return snprintf(err, n, "out of memory"), -1;
-    }
-    if (apply_states(k, m->states, m->nbodies) != 0) return snprintf(err, n, "bad body state"), -1;
-    for (i = 0; i < m->npairs; i++) {
-        if (!held(k, m->a[i]) || !held(k, m->b[i]) || m->a[i] >= m->b[i]) return snprintf(err, n, "bad pair"), -1;
-        if (vrOwner_AddPairAt(k->owner, m->a[i], m->b[i], m->t, m->flagged[i]) != 0) return snprintf(err, n, "out of memory"), -1;
-    }
-    return 0;
-}
 
 /* ---- requests ---------------------------------------------------------------------------- */
 
@@ -197,12 +29,12 @@ static void look_ahead(vrWorker *k, int64_t seq, const vroc_grid_t *grid, int al
     vrGrid g;
     int r;
     if (vrWire_GetGrid(grid, &g) != 0) {
-        send_earliest(k, seq, 0, NULL, 0, NULL, NULL, "bad grid");
+        vrWorker_SendEarliest(k, seq, 0, NULL, 0, NULL, NULL, "bad grid");
         return;
     }
     r = vrOwner_FirstEvent(k->owner, &g, allow, &k->first);
     k->has_first = r == 1;
-    send_earliest(k, seq, r == 1, &k->first, 0, NULL, NULL, r < 0 ? "out of memory" : NULL);
+    vrWorker_SendEarliest(k, seq, r == 1, &k->first, 0, NULL, NULL, r < 0 ? "out of memory" : NULL);
 }
 
 static void check_overlaps(vrWorker *k, int64_t seq, double t, const int32_t *owed, int nowed)
@@ -225,7 +57,7 @@ static void check_overlaps(vrWorker *k, int64_t seq, double t, const int32_t *ow
         a[i] = pairs[i][0];
         b[i] = pairs[i][1];
     }
-    send_earliest(k, seq, 0, NULL, a && b ? count : 0, a, b, pairs && a && b ? NULL : "out of memory");
+    vrWorker_SendEarliest(k, seq, 0, NULL, a && b ? count : 0, a, b, pairs && a && b ? NULL : "out of memory");
     free(pairs);
     free(a);
     free(b);
@@ -240,10 +72,10 @@ static void take_setup(vrWorker *k, const vroc_setup_t *m)
         k->last_seq = k->reply_seq = -1;
         k->frames = 0;
     }
-    if (fresh(k, m->run, m->seq)) {
+    if (vrWorker_Fresh(k, m->run, m->seq)) {
         k->gp = m->gp;
-        if (set_up(k, m, err, sizeof err) != 0 && !err[0]) strcpy(err, "setup failed");
-        send_earliest(k, m->seq, 0, NULL, 0, NULL, NULL, err[0] ? err : NULL);
+        if (vrWorker_SetUp(k, m, err, sizeof err) != 0 && !err[0]) strcpy(err, "setup failed");
+        vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, err[0] ? err : NULL);
     }
 }
 
@@ -258,7 +90,7 @@ static void maybe_die(vrWorker *k)
 
 static void take_frame(vrWorker *k, const vroc_frame_start_t *m)
 {
-    if (!k->owner || !fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
+    if (!k->owner || !vrWorker_Fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
     if (!m->check) {
         k->frames++;
         k->rounds = 0;
@@ -266,7 +98,7 @@ static void take_frame(vrWorker *k, const vroc_frame_start_t *m)
     }
     if (k->silent) return;
     vrOwner_Advance(k->owner, m->t);
-    if (apply_states(k, m->states, m->nstates) != 0) send_earliest(k, m->seq, 0, NULL, 0, NULL, NULL, "bad body state");
+    if (vrWorker_ApplyStates(k, m->states, m->nstates) != 0) vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, "bad body state");
     else if (m->check) check_overlaps(k, m->seq, m->t, m->owed, m->nowed);
     else look_ahead(k, m->seq, &m->grid, m->allow_instant);
 }
@@ -277,7 +109,7 @@ static void take_advance(vrWorker *k, const vroc_advance_t *m)
     vrWireStates ws;
     vrResponseStats rs;
     vrOwnerStats os;
-    if (!k->owner || !fresh(k, m->run, m->seq)) return;
+    if (!k->owner || !vrWorker_Fresh(k, m->run, m->seq)) return;
     k->rounds++;
     maybe_die(k);
     if (k->silent || m->responder != k->gp) return;
@@ -299,16 +131,16 @@ static void take_advance(vrWorker *k, const vroc_advance_t *m)
     if (vrWire_PutStates(&ws, &k->scratch) == 0) {
         u.nstates = ws.n;
         u.states = ws.m;
-        if (VR_ENCODE(&k->reply, vroc_update_t, &u) == 0) answer(k, VR_CH_UPDATE, m->seq);
+        if (VR_ENCODE(&k->reply, vroc_update_t, &u) == 0) vrWorker_Answer(k, VR_CH_UPDATE, m->seq);
     }
     vrWire_FreeStates(&ws);
 }
 
 static void take_forward(vrWorker *k, const vroc_update_t *m)
 {
-    if (!k->owner || m->gp >= 0 || !fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
+    if (!k->owner || m->gp >= 0 || !vrWorker_Fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
     vrOwner_Advance(k->owner, m->t);
-    if (apply_states(k, m->states, m->nstates) != 0) send_earliest(k, m->seq, 0, NULL, 0, NULL, NULL, "bad body state");
+    if (vrWorker_ApplyStates(k, m->states, m->nstates) != 0) vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, "bad body state");
     else look_ahead(k, m->seq, &m->grid, m->allow_instant);
 }
 
@@ -330,20 +162,20 @@ static void report_touches(vrWorker *k, const vroc_contacts_t *m)
         r.gp = k->gp;
         r.error = "out of memory";
     }
-    if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) answer(k, VR_CH_CANDIDATES, m->seq);
+    if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) vrWorker_Answer(k, VR_CH_CANDIDATES, m->seq);
     vrWire_FreeTouches(&r);
     vrTouches_Free(&list);
 }
 
 static void take_contacts(vrWorker *k, const vroc_contacts_t *m)
 {
-    if (!k->owner || !fresh(k, m->run, m->seq) || !isfinite(m->t) || !(m->h >= 0)) return;
+    if (!k->owner || !vrWorker_Fresh(k, m->run, m->seq) || !isfinite(m->t) || !(m->h >= 0)) return;
     vrOwner_Advance(k->owner, m->t);
-    if (apply_states(k, m->states, m->nstates) != 0) {
+    if (vrWorker_ApplyStates(k, m->states, m->nstates) != 0) {
         vroc_candidates_t r;
         memset(&r, 0, sizeof r);
         r.run = k->run, r.seq = m->seq, r.gp = k->gp, r.error = "bad body state";
-        if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) answer(k, VR_CH_CANDIDATES, m->seq);
+        if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) vrWorker_Answer(k, VR_CH_CANDIDATES, m->seq);
         return;
     }
     report_touches(k, m);
@@ -418,7 +250,7 @@ int vrWorker_Tick(vrWorker *k)
 {
     if (k->run == 0) {             /* free: tell the SGPs we are here */
         k->last_hello = 0;
-        beat(k);
+        vrWorker_Beat(k);
     }
     if (k->forked && getppid() != k->parent) k->done = 1;   /* our SGP is gone */
     return k->done;

@@ -110,7 +110,7 @@ static int sgp_kinds(const char *dir)
     PUT(REC_HELLO, vroc_hello_t, &h);
     if (save(dir, "hello") != 0) return -1;
     memset(&e, 0, sizeof e);
-    e.run = RUN, e.seq = 2, e.found = 1, e.t = 0.05, e.a = &a, e.b = &b, e.error = "";
+    e.run = RUN, e.seq = 2, e.found = 1, e.t = 0.05, e.approach = -1.5, e.a = &a, e.b = &b, e.error = "";
     PUT(REC_EARLIEST, vroc_earliest_t, &e);
     if (save(dir, "earliest") != 0) return -1;
     memset(&c, 0, sizeof c);

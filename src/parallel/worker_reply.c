@@ -1,0 +1,77 @@
+/* worker_reply.c — a worker's answers to the SGP (SPEC 5): the last one
+ * kept for repeated requests, the earliest event it found with what the
+ * coordinator needs of it, and heartbeats while it is busy.
+ *
+ *   vrWorker_Answer, vrWorker_Fresh   an answer sent and kept; a request new or repeated
+ *   vrWorker_SendEarliest             the `earliest` message
+ *   vrWorker_Beat                     a heartbeat while a long look-ahead keeps it busy
+ */
+#include <string.h>
+#include <unistd.h>
+#include "worker_reply.h"
+#include "vroc_earliest_t.h"
+#include "vroc_hello_t.h"
+
+void vrWorker_Answer(vrWorker *k, const char *channel, int64_t seq)
+{
+    k->reply_channel = channel;
+    k->reply_seq = seq;
+    vrLink_Publish(k->link, channel, k->reply.data, k->reply.len);
+}
+
+int vrWorker_Fresh(vrWorker *k, int64_t run, int64_t seq)
+{
+    if (k->silent || run != k->run || seq < k->last_seq) return 0;
+    if (seq == k->last_seq) {
+        if (k->reply_seq == seq) vrLink_Publish(k->link, k->reply_channel, k->reply.data, k->reply.len);
+        return 0;
+    }
+    k->last_seq = seq;
+    return 1;
+}
+
+void vrWorker_SendEarliest(vrWorker *k, int64_t seq, int found, const vrEvent *ev,
+                           int noverlap, int32_t *a, int32_t *b, const char *error)
+{
+    vroc_earliest_t m;
+    vrOwnerStats os;
+    memset(&m, 0, sizeof m);
+    memset(&os, 0, sizeof os);
+    if (k->owner) vrOwner_Stats(k->owner, &os);
+    m.run = k->run;
+    m.seq = seq;
+    m.gp = k->gp;
+    m.found = (int8_t)found;
+    if (found) {
+        m.t = ev->t;
+        m.order = ev->order;
+        m.kind = (int8_t)ev->kind;
+        m.approach = ev->approach;
+        m.point[0] = ev->c.x, m.point[1] = ev->c.y, m.point[2] = ev->c.z;
+    }
+    m.checks = os.checks;
+    m.heap_pops = os.heap_pops;
+    m.copies = k->owner ? vrOwner_BodyCount(k->owner) : 0;
+    m.noverlap = noverlap;
+    m.a = a;
+    m.b = b;
+    m.error = (char *)(error ? error : "");
+    if (VR_ENCODE(&k->reply, vroc_earliest_t, &m) == 0) vrWorker_Answer(k, VR_CH_EARLIEST, seq);
+}
+
+void vrWorker_Beat(void *ctx)
+{
+    vrWorker *k = ctx;
+    double now = vrLink_NowMs();
+    vroc_hello_t m;
+    vrBuf b = {NULL, 0, 0};
+    if (now - k->last_hello < HELLO_MS) return;
+    k->last_hello = now;
+    m.nonce = k->nonce;
+    m.pid = (int32_t)getpid();
+    m.run = k->run;
+    m.gp = k->gp;
+    m.seq = k->last_seq;
+    if (VR_ENCODE(&b, vroc_hello_t, &m) == 0) vrLink_Publish(k->link, VR_CH_HELLO, b.data, b.len);
+    vrBuf_Free(&b);
+}

@@ -1,0 +1,40 @@
+/* worker_state.h — a worker's state (thesis 3.5, SPEC 5), shared by its
+ * files: worker.c (the requests and the process), worker_reply.c (its
+ * answers and heartbeats) and worker_hold.c (the objects and pairs it
+ * holds).  As sgp_state.h is the coordinator's. */
+#ifndef VROC_WORKER_STATE_H
+#define VROC_WORKER_STATE_H
+
+#include <sys/types.h>
+#include "owner.h"
+#include "table.h"
+#include "worker.h"
+
+#define HELLO_MS 100.0      /* announcements while free, heartbeats while busy */
+
+struct vrWorker {
+    vrLink *link;
+    long long nonce;
+    int forked;
+    pid_t parent;
+    int64_t run, last_seq, reply_seq;
+    int gp;
+    vrBuf reply;                  /* the last answer, for repeated requests */
+    const char *reply_channel;
+    vrTable objects;              /* the objects of its pairs, at the SGP's ids */
+    vrOwner *owner;
+    vrParams params;
+    vrEvent first;                /* the first event it last reported */
+    int has_first;
+    vrUpdate scratch;
+    int *ids;
+    int idcap;
+    long frames;
+    int kill_gp, kill_frame;      /* VROC_FAULT_KILL=gp:frame[:round] */
+    int kill_round, rounds;       /* ...at that frame's round-th advance (0: at its start) */
+    int silent, done;
+    double last_hello;
+    lcm_subscription_t *subs[6];
+};
+
+#endif
