@@ -98,6 +98,6 @@ int vrLcp_SolveWith(const double *A, const double *q, int n, double *x, vrLcpFac
 int vrLcp_Solve(const double *A, const double *q, int n, double *x)
 {
     vrLcpFactor f;
-    f.valid = 0;
+    f.valid = 0, f.basis = 0;
     return vrLcp_SolveWith(A, q, n, x, &f);
 }
