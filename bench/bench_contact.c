@@ -17,6 +17,7 @@
  *   pile     100 random objects in a 4 m room, 6000 frames of 0.01 s
  *   office   scenes/office.cmd, 600 frames, heap on and off
  *
+ * `bench_contact NAME...` runs only the benchmarks named (pile, office, ...).
  * Prints the machine, a table per benchmark with the goal beside each figure
  * ("met" or "missed by N×") and `csv,` lines.  Asserts nothing: exits 0
  * unless vroc could not run or a `stats` line was missing.
@@ -607,12 +608,24 @@ static void machine(void)
            " medians of %d separate vroc processes\n", RUNS);
 }
 
-int main(void)
+/* the benchmarks named on the command line (all when none is): `pile`
+ * alone while working on the solver, where the whole bench takes minutes */
+static int wanted(int argc, char **argv, const char *name)
 {
+    int i;
+    for (i = 1; i < argc; i++)
+        if (!strcmp(argv[i], name)) return 1;
+    return argc < 2;
+}
+
+int main(int argc, char **argv)
+{
+    static const struct { const char *name; void (*run)(void); } benches[] = {
+        {"pyramid", pyramid}, {"tower", tower}, {"heavy", heavy}, {"pile", pile}, {"office", office}};
     const char *build = getenv("VROC_BUILD"), *cpu = getenv("VROC_BENCH_CPU");
     static char path[512];
     char *csv_text = NULL;
-    size_t csv_len = 0;
+    size_t csv_len = 0, k;
     if (!build || !*build) build = "build/rel";
     snprintf(path, sizeof path, "%s/vroc", build);
     vroc_path = path;
@@ -620,17 +633,22 @@ int main(void)
         fprintf(stderr, "bench_contact: no %s (make vroc; run from the repository root)\n", path);
         return 1;
     }
+    for (k = 1; k < (size_t)argc; k++) {
+        size_t j;
+        for (j = 0; j < sizeof benches / sizeof benches[0] && strcmp(argv[k], benches[j].name); j++) continue;
+        if (j == sizeof benches / sizeof benches[0]) {
+            fprintf(stderr, "bench_contact: no benchmark %s (pyramid, tower, heavy, pile, office)\n", argv[k]);
+            return 1;
+        }
+    }
     if (system("command -v taskset >/dev/null 2>&1") == 0) {
         snprintf(pin_buf, sizeof pin_buf, "taskset -c %s ", cpu && *cpu ? cpu : "0");
         pin = pin_buf;
     }
     if (!(csv = open_memstream(&csv_text, &csv_len))) csv = stdout;
     machine();
-    pyramid();
-    tower();
-    heavy();
-    pile();
-    office();
+    for (k = 0; k < sizeof benches / sizeof benches[0]; k++)
+        if (wanted(argc, argv, benches[k].name)) benches[k].run();
     if (csv != stdout) {
         fclose(csv);
         printf("\n%s", csv_text ? csv_text : "");

@@ -3,18 +3,18 @@
  * ground-up pass, and the energy check.
  *   sweep, residual        every contact once, in order; what they leave
  *   levels, shock_pass     the ground-up pass with lower bodies held still
- *   solve, vrIsland_Solve  a try, and the tries the energy check asks for
+ *   free_solve, solve      a try's state; a try
+ *   vrIsland_Solve         the tries the energy check asks for
  */
 #include <stdlib.h>
 #include <string.h>
 #include "island_contact.h"
-#include "lcp.h"
 
 static double sweep(vrIslandSolve *s)
 {
     double most = 0;
     int ci;
-    for (ci = 0; ci < s->ncontact; ci++) most = vr_max(most, vrSolve_ContactStep(s, ci, 0, 0));
+    for (ci = 0; ci < s->ncontact; ci++) most = vr_max(most, vrSolve_ContactStep(s, ci));
     return most;
 }
 
@@ -26,9 +26,7 @@ static double residual(vrIslandSolve *s)
     for (ci = 0; ci < s->ncontact; ci++) {
         const vrIslandContact *c = &s->c[ci];
         for (i = 0; i < c->npoints; i++) {
-            const vrSolvePoint *pt = vrSolve_Point(s, ci, i);
-            double un = vec3_dot(c->n, vrSolve_RelativeVelocity(&s->body[c->a], &s->body[c->b], pt));
-            if (pt->kn > 0) worst = vr_max(worst, c->floor[i] - un);
+            if (vrSolve_Point(s, ci, i)->kn > 0) worst = vr_max(worst, c->floor[i] - vrSolve_NormalVelocity(s, ci, i));
         }
     }
     return worst;
@@ -71,21 +69,15 @@ static int pass_level(const vrIslandBody *b, const vrIslandContact *c)
  * not moved again by what lies above. */
 static void shock_pass(vrIslandSolve *s, int sweeps, double tol)
 {
-    int ci, level, top = -1, k;
-    for (ci = 0; ci < s->ncontact; ci++) top = top > pass_level(s->body, &s->c[ci]) ? top : pass_level(s->body, &s->c[ci]);
+    int *at = s->pass, ci, level, top = -1, k;
+    for (ci = 0; ci < s->ncontact; ci++) at[ci] = pass_level(s->body, &s->c[ci]), top = top > at[ci] ? top : at[ci];
     for (level = 1; level <= top; level++) {
-        for (ci = 0; ci < s->ncontact; ci++) {
-            const vrIslandContact *c = &s->c[ci];
-            if (pass_level(s->body, c) == level)
-                vrSolve_Hold(s, ci, s->body[c->a].level < level, s->body[c->b].level < level);
-        }
+        for (ci = 0; ci < s->ncontact; ci++)
+            if (at[ci] == level) vrSolve_Hold(s, ci, s->body[s->c[ci].a].level < level, s->body[s->c[ci].b].level < level);
         for (k = 0; k < sweeps; k++) {
             double most = 0;
-            for (ci = 0; ci < s->ncontact; ci++) {
-                const vrIslandContact *c = &s->c[ci];
-                if (pass_level(s->body, c) != level) continue;
-                most = vr_max(most, vrSolve_ContactStep(s, ci, s->body[c->a].level < level, s->body[c->b].level < level));
-            }
+            for (ci = 0; ci < s->ncontact; ci++)
+                if (at[ci] == level) most = vr_max(most, vrSolve_ContactStep(s, ci));
             if (most <= tol) break;
         }
     }
@@ -106,6 +98,15 @@ static int valid(const vrIslandBody *body, int nbody, const vrIslandContact *c, 
     return 1;
 }
 
+static void free_solve(vrIslandSolve *s)
+{
+    free(s->pt);
+    free(s->patch);
+    free(s->m);
+    free(s->pass);
+    free(s->lcp);
+}
+
 static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
                  int frictionless, vrIslandStats *st)
 {
@@ -118,22 +119,21 @@ static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact
     s.pt = malloc((size_t)ncontact * VR_ISLAND_POINTS * sizeof *s.pt);
     s.patch = malloc((size_t)ncontact * sizeof *s.patch);
     s.m = malloc((size_t)ncontact * VR_LCP_MAX * VR_LCP_MAX * sizeof *s.m);
-    if (!s.pt || !s.patch || !s.m) {
-        free(s.pt);
-        free(s.patch);
-        free(s.m);
+    s.pass = malloc((size_t)ncontact * sizeof *s.pass);
+    s.lcp = malloc((size_t)ncontact * sizeof *s.lcp);
+    if (!s.pt || !s.patch || !s.m || !s.pass || !s.lcp) {
+        free_solve(&s);
         return -1;
     }
     s.body = body, s.c = c, s.ncontact = ncontact, s.frictionless = frictionless;
     for (ci = 0; ci < ncontact; ci++) {
-        vrSolve_Hold(&s, ci, 0, 0);
-        if (c[ci].warm && !frictionless) {
-            vrSolve_ApplyImpulses(&s, ci);
-            continue;
+        if (!c[ci].warm || frictionless) {
+            for (i = 0; i < c[ci].npoints; i++) c[ci].lambda[i] = 0;
+            c[ci].friction = vec3_zero();
+            c[ci].twist = 0;
         }
-        for (i = 0; i < c[ci].npoints; i++) c[ci].lambda[i] = 0;
-        c[ci].friction = vec3_zero();
-        c[ci].twist = 0;
+        vrSolve_Hold(&s, ci, 0, 0);
+        if (c[ci].warm && !frictionless) vrSolve_ApplyImpulses(&s, ci);
     }
     for (k = 0; k < sweeps; k++) {
         st->sweeps++;
@@ -144,9 +144,7 @@ static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact
         st->shock = 1;
     }
     st->residual = residual(&s);
-    free(s.pt);
-    free(s.patch);
-    free(s.m);
+    free_solve(&s);
     return 0;
 }
 

@@ -7,8 +7,8 @@
  * most eight unknowns a Cholesky factorisation per guess is cheap, and
  * the answer is exact where projected Gauss-Seidel over a face's points
  * (rotations coupling them) took hundreds of sweeps.
- *   cholesky_solve   the basis's system
- *   vrLcp_Solve
+ *   cholesky, substitute, factor   the basis's system (its factor kept)
+ *   vrLcp_SolveWith, vrLcp_Solve
  */
 #include <math.h>
 #include "lcp.h"
@@ -20,8 +20,9 @@
  * the tolerance of the others) */
 #define ROUNDING 1e-13
 
-/* solves M y = b in place (M m x m, positive definite); -1 when not */
-static int cholesky_solve(double M[VR_LCP_MAX][VR_LCP_MAX], double *b, int m)
+/* M = L L^T in place (the lower triangle; M m x m, positive definite);
+ * -1 when not */
+static int cholesky(double M[VR_LCP_MAX][VR_LCP_MAX], int m)
 {
     int i, j, k;
     for (j = 0; j < m; j++) {
@@ -35,33 +36,51 @@ static int cholesky_solve(double M[VR_LCP_MAX][VR_LCP_MAX], double *b, int m)
             M[i][j] = s / M[j][j];
         }
     }
-    for (i = 0; i < m; i++) {
-        for (k = 0; k < i; k++) b[i] -= M[i][k] * b[k];
-        b[i] /= M[i][i];
-    }
-    for (i = m - 1; i >= 0; i--) {
-        for (k = i + 1; k < m; k++) b[i] -= M[k][i] * b[k];
-        b[i] /= M[i][i];
-    }
     return 0;
 }
 
-int vrLcp_Solve(const double *A, const double *q, int n, double *x)
+/* L L^T y = b, b into y in place */
+static void substitute(double L[VR_LCP_MAX][VR_LCP_MAX], double *b, int m)
+{
+    int i, k;
+    for (i = 0; i < m; i++) {
+        for (k = 0; k < i; k++) b[i] -= L[i][k] * b[k];
+        b[i] /= L[i][i];
+    }
+    for (i = m - 1; i >= 0; i--) {
+        for (k = i + 1; k < m; k++) b[i] -= L[k][i] * b[k];
+        b[i] /= L[i][i];
+    }
+}
+
+/* the basis's factor: the one kept when it is that basis's (A unchanged
+ * since: the caller's promise), else made and kept */
+static int factor(const double *A, int n, const int *idx, int m, unsigned basis, double scale, vrLcpFactor *f)
+{
+    int i, j;
+    if (f->valid && f->basis == basis) return 0;
+    for (i = 0; i < m; i++) {
+        for (j = 0; j < m; j++) f->L[i][j] = A[idx[i] * n + idx[j]];
+        f->L[i][i] += REGULARISE * scale;
+    }
+    f->valid = cholesky(f->L, m) == 0, f->basis = basis;
+    return f->valid ? 0 : -1;
+}
+
+int vrLcp_SolveWith(const double *A, const double *q, int n, double *x, vrLcpFactor *f)
 {
     int in[VR_LCP_MAX], idx[VR_LCP_MAX], pivot, i, j;
     double scale = 0;
     for (i = 0; i < n; i++) scale = fmax(scale, A[i * n + i]), in[i] = x[i] > 0;
     for (pivot = 0; pivot < PIVOTS_MAX; pivot++) {
-        double M[VR_LCP_MAX][VR_LCP_MAX], y[VR_LCP_MAX];
+        double y[VR_LCP_MAX];
+        unsigned basis = 0;
         int m = 0, bad = -1;
         for (i = 0; i < n; i++)
-            if (in[i]) idx[m++] = i;
-        for (i = 0; i < m; i++) {
-            for (j = 0; j < m; j++) M[i][j] = A[idx[i] * n + idx[j]];
-            M[i][i] += REGULARISE * scale;
-            y[i] = -q[idx[i]];
-        }
-        if (m && cholesky_solve(M, y, m) != 0) return -1;
+            if (in[i]) idx[m++] = i, basis |= 1u << i;
+        for (i = 0; i < m; i++) y[i] = -q[idx[i]];
+        if (m && factor(A, n, idx, m, basis, scale, f) != 0) return -1;
+        if (m) substitute(f->L, y, m);
         for (i = 0; i < n; i++) x[i] = 0;
         for (i = 0; i < m; i++) x[idx[i]] = y[i];
         for (i = 0; i < n && bad < 0; i++) {
@@ -74,4 +93,11 @@ int vrLcp_Solve(const double *A, const double *q, int n, double *x)
     }
     for (i = 0; i < n; i++) x[i] = x[i] > 0 ? x[i] : 0;
     return -1;
+}
+
+int vrLcp_Solve(const double *A, const double *q, int n, double *x)
+{
+    vrLcpFactor f;
+    f.valid = 0, f.basis = 0;
+    return vrLcp_SolveWith(A, q, n, x, &f);
 }

@@ -15,4 +15,17 @@
  * last basis's, clamped to >= 0). */
 int vrLcp_Solve(const double *A, const double *q, int n, double *x);
 
+/* A basis's Cholesky factor, kept between solves with the same A: the
+ * sweeps of island.c solve each contact's LCP once a sweep with the same
+ * A and nearly always the same basis, and the factor was most of the
+ * cost.  The answer is the same bits as without it. */
+typedef struct vrLcpFactor {
+    int valid;                /* 0: none kept (set it so whenever A changes) */
+    unsigned basis;           /* bit i: x_i in the basis */
+    double L[VR_LCP_MAX][VR_LCP_MAX];
+} vrLcpFactor;
+
+/* vrLcp_Solve with the factor f kept from the last call with this A */
+int vrLcp_SolveWith(const double *A, const double *q, int n, double *x, vrLcpFactor *f);
+
 #endif
