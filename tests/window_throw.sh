@@ -23,7 +23,8 @@
 # where the hand point was x_up:
 #     ball velocity  = (vx, vy, vz)                  (to 1e-9)
 #     ball centre    = c0 + (p_up - p0) + (vx,vy,vz) (T - t_up)
-# and vx is about 400 m (within 0.4x..2x: the pace), vy = vz = 0.
+# and vx has the drag's sign and size (within 0.2x..5x of its mean speed
+# in the hand's samples: the pace), vy = vz = 0.
 # Ends with `N passed, M failed`.
 set -u
 top=$(pwd)
@@ -57,7 +58,11 @@ if wait_for "$tmp/out" '^ball,' && id=$(window_id); then
             e = sqrt(68); t = (8 * (y0 + 8) - 2 * (z0 - 3)) / e
             m = 2 * t * 0.41421356237309503 / 512
             if (!up) bad = bad " no release in the hand log"
-            if (vx < 0.4 * 400 * m || vx > 2 * 400 * m) bad = bad " throw " vx " m/s, the drag about " 400 * m
+            # the size: the mean speed of the drag in the samples of the hand
+            # (the pace xdotool keeps on a loaded machine varies: 400 m is
+            # the unloaded figure); the throw is its last 50 ms, so loosely
+            vm = tu > t0 ? (xu - x0) / (tu - t0) : 0
+            if (!(vm > 0) || vx < 0.2 * vm || vx > 5 * vm) bad = bad " throw " vx " m/s, the mean of the drag " vm " (unloaded about " 400 * m ")"
             if ((b[10] - vx) ^ 2 + (b[11] - vy) ^ 2 + (b[12] - vz) ^ 2 > 1e-18)
                 bad = bad " ball velocity (" b[10] "," b[11] "," b[12] "), the throw (" vx "," vy "," vz ")"
             cx = xu - x0 + vx * (T - tu); cy = yu - y0 + vy * (T - tu); cz = 1 + zu - z0 + vz * (T - tu)
