@@ -11,13 +11,14 @@
  * L itself are kept to rounding and energy does not drift.  It runs with a
  * fixed sub-step from the last event, so the pose at t is a pure function of
  * the anchor and t - t0; a small cache of checkpoints makes successive
- * queries cost only the steps between them.
+ * queries cost only the steps between them (rotation.c: the orientation
+ * at t - t0 of each kind).
  */
 #include "body.h"
 #include "mass.h"
+#include "rotation.h"
 
 #define ISOTROPY_TOL 1e-12     /* relative difference of moments taken as equal */
-#define CHECKPOINT_EVERY 64
 
 /* |L| / I_min: what |omega| never exceeds in free flight */
 static double spin_of(const vrBody *b)
@@ -142,131 +143,6 @@ static vec3 omega_at(const vrBody *b, const mat33 *R)
     return mat33_mulv(R, wb);
 }
 
-static double moment(const vrBody *b, int k) { return vec3_get(b->moments, k); }
-
-/* one exact sub-flow of H_k = Pi_k^2 / 2 I_k for time s: Pi turns about
- * e_k by -theta, the principal frame by +theta about its own axis k */
-static void subflow(const vrBody *b, int k, double s, vrRotState *st)
-{
-    double pk = k == 0 ? st->Pi.x : k == 1 ? st->Pi.y : st->Pi.z;
-    double th = pk * s / moment(b, k), hc = cos(0.5 * th), hs = sin(0.5 * th);
-    double c = 1.0 - 2.0 * hs * hs, sn = 2.0 * hs * hc;     /* of th, from the half angle's */
-    vec3 p = st->Pi;
-    quat r = quat_make(hc, k == 0 ? hs : 0, k == 1 ? hs : 0, k == 2 ? hs : 0);
-    if (k == 0) st->Pi = vec3_make(p.x, c * p.y + sn * p.z, -sn * p.y + c * p.z);
-    if (k == 1) st->Pi = vec3_make(c * p.x - sn * p.z, p.y, sn * p.x + c * p.z);
-    if (k == 2) st->Pi = vec3_make(c * p.x + sn * p.y, -sn * p.x + c * p.y, p.z);
-    st->Q = quat_mul(st->Q, r);
-}
-
-/* the flows of x for s, y for h/2, z for h, y for h/2: a step of h whose
- * closing x flow is left open */
-static void open_flows(const vrBody *b, double s, double h, vrRotState *st)
-{
-    subflow(b, 0, s, st);
-    subflow(b, 1, 0.5 * h, st);
-    subflow(b, 2, h, st);
-    subflow(b, 1, 0.5 * h, st);
-}
-
-/* Strang splitting, symmetric in time (second order, symplectic): the
- * flows of x for h/2, y for h/2, z for h, y for h/2, x for h/2 */
-static void rot_step(const vrBody *b, double h, vrRotState *st)
-{
-    open_flows(b, 0.5 * h, h, st);
-    subflow(b, 0, 0.5 * h, st);
-}
-
-/* The cache keeps whole steps n >= 1 "open": without their closing x flow
- * for h/2, which the next step's opening one joins (two flows about one
- * axis add exactly), so a step costs four flows, not five.  Step 0 (the
- * anchor) is whole.  One step on from st: */
-static void open_step(const vrBody *b, double h, vrRotState *st)
-{
-    open_flows(b, st->step == 0 ? 0.5 * h : h, h, st);
-    st->step++;
-}
-
-static void push_checkpoint(vrRotCache *rc, const vrRotState *st)
-{
-    if (rc->nring == VR_ROT_CHECKPOINTS) {
-        int i;
-        for (i = 1; i < VR_ROT_CHECKPOINTS; i++) rc->ring[i - 1] = rc->ring[i];
-        rc->nring--;
-    }
-    rc->ring[rc->nring++] = *st;
-}
-
-/* integrator state at whole step n (open, but step 0), from the nearest
- * cached state before it */
-static vrRotState rot_state_at(vrBody *b, long n)
-{
-    vrRotCache *rc = &b->rc;
-    vrRotState st = rc->anchor;
-    int i;
-    if (n >= rc->last.step) {
-        st = rc->last;
-    } else {
-        for (i = rc->nring - 1; i >= 0 && rc->ring[i].step > n; i--)
-            ;
-        if (i >= 0) st = rc->ring[i];
-    }
-    while (st.step < n) {
-        open_step(b, rc->h, &st);
-        if (st.step % CHECKPOINT_EVERY == 0 && (rc->nring == 0 || st.step > rc->ring[rc->nring - 1].step))
-            push_checkpoint(rc, &st);
-    }
-    rc->last = st;
-    return st;
-}
-
-static quat general_orientation(vrBody *b, double tau)
-{
-    long n = (long)floor(tau / b->rc.h);
-    vrRotState st = rot_state_at(b, n);
-    double rest = tau - (double)n * b->rc.h;
-    if (n == 0) {
-        if (rest > 0) rot_step(b, rest, &st);
-    } else if (rest > 0) {        /* step n's closing x flow joins the rest's opening one */
-        open_flows(b, 0.5 * (b->rc.h + rest), rest, &st);
-        subflow(b, 0, 0.5 * rest, &st);
-    } else {
-        subflow(b, 0, 0.5 * b->rc.h, &st);
-    }
-    return quat_mul(quat_normalize(st.Q), quat_conj(b->principal));
-}
-
-/* regular precession of a symmetric top: about L at |L|/I_t, and about the
- * symmetry axis at Pi_s (1/I_s - 1/I_t) */
-static quat symmetric_orientation(const vrBody *b, double tau)
-{
-    int s = b->sym_axis;
-    double it = moment(b, s == 0 ? 1 : 0), is = moment(b, s);
-    const vrRotState *a = &b->rc.anchor;
-    double ps = s == 0 ? a->Pi.x : s == 1 ? a->Pi.y : a->Pi.z;
-    vec3 axis = vec3_make(s == 0, s == 1, s == 2);
-    quat spin = quat_from_rotvec(vec3_scale(axis, ps * (1.0 / is - 1.0 / it) * tau));
-    quat prec = quat_from_rotvec(vec3_scale(b->m.L, tau / it));
-    quat Q = quat_mul(quat_mul(prec, a->Q), spin);
-    return quat_mul(quat_normalize(Q), quat_conj(b->principal));
-}
-
-static quat orientation_at(vrBody *b, double tau)
-{
-    switch (b->rot) {
-    case VR_ROT_ISOTROPIC:
-        return quat_normalize(quat_mul(quat_from_rotvec(vec3_scale(b->m.L, tau / b->moments.x)), b->m.q0));
-    case VR_ROT_SYMMETRIC:
-        return symmetric_orientation(b, tau);
-    case VR_ROT_GENERAL:
-        return general_orientation(b, tau);
-    case VR_ROT_KINEMATIC:   /* the hand's slerp: a constant world omega */
-        return quat_normalize(quat_mul(quat_from_rotvec(vec3_scale(b->m.L, tau)), b->m.q0));
-    default:
-        return b->m.q0;
-    }
-}
-
 void vrBody_Pose(vrBody *b, double t, vrPose *pose)
 {
     vec3 x;
@@ -275,7 +151,7 @@ void vrBody_Pose(vrBody *b, double t, vrPose *pose)
         return;
     }
     vrBody_Position(b, t, &x);
-    *pose = vrPose_make(x, orientation_at(b, t - b->m.t0));
+    *pose = vrPose_make(x, vrRotation_Orientation(b, t - b->m.t0));
     b->pose = *pose;
     b->pose_t = t;
     b->pose_valid = 1;
