@@ -19,6 +19,7 @@ static const vrSaveSection sections[] = {
     {"pending", "obj t raw " STATE_KEYS, 0, vrSave_WritePending, vrSave_ReadPending},
     {"sample", "device t x q buttons", 0, vrSave_WriteSamples, vrSave_ReadSample},
     {"sound_pair", "a b t", 0, vrSave_WriteSoundPairs, vrSave_ReadSoundPair},
+    {"panel", "p q hold knob grip_p grip_q u moved", 0, vrSave_WritePanel, vrSave_ReadPanel},
     /* New state goes here, one line: its word (read as `state WORD ...`;
      * the dispatcher below finds it by this table, nothing else to add),
      * the keys its lines may hold, per object or not, and its writer and

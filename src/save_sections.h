@@ -4,6 +4,7 @@
  *   save_body.c    body, warm, pending
  *   save_track.c   sample (the head's and the hand's samples still needed)
  *   save_sound.c   sound_pair (the collision sounds' refractory times)
+ *   save_panel.c   panel (where the tool panel is, what the hand holds of it)
  * A new piece of state (the grab's, say) is a file of its own with a
  * writer and a reader declared here and one line in save.c's table. */
 #ifndef VROC_SAVE_SECTIONS_H
@@ -38,5 +39,7 @@ void vrSave_WriteSamples(vrWorld *w, int id, FILE *out);
 int vrSave_ReadSample(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
 void vrSave_WriteSoundPairs(vrWorld *w, int id, FILE *out);
 int vrSave_ReadSoundPair(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
+void vrSave_WritePanel(vrWorld *w, int id, FILE *out);
+int vrSave_ReadPanel(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
 
 #endif

@@ -313,6 +313,30 @@ if [ ! -s liveb.err ] && [ ! -s livec.err ] && grep -q '^head 1 ' livea.mid && c
 else fail "live: the reader's head, hand or bodies differ from the listening run's"
     diff livea.mid liveb.out | head -4; diff livea.end livec.out | head -4; head -2 liveb.err livec.err; fi
 
+# ---- the tool panel, moved by the hand and held over the save ------------------
+# The hand takes the sheet at its centre (0,-7,2.5) at 0.2 s and carries
+# it 0.5 m along x and 0.3 m up by 1 s; saved at 0.5 s, the sheet held.
+# The reader must hold it too (state panel, state grab, state sample) and
+# leave it where the saving run does: show panel the same, and moved by
+# the hand's displacement (stop's centre at x = -0.15 + 0.5).
+cat >panel.trk <<'S'
+0    hand 0 -7 2.5  1 0 0 0  0
+0.2  hand 0 -7 2.5  1 0 0 0  1
+1.0  hand 0.5 -7 2.8  1 0 0 0  1
+1.2  hand 0.5 -7 2.8  1 0 0 0  0
+S
+cat >panel.cmd <<'S'
+panel = 1
+time_step = 0.1
+sphere ball
+translate = (0,0,1)
+track panel.trk
+S
+after "step 10" "show panel" "dump" "stats"
+two_runs panel 5 after.cmd
+if grep -q '^state panel .*hold=3' panel.vroc && grep -q '^stop 0.35 ' panel.a; then pass
+else fail "panel: no held sheet in the save, or the sheet did not follow the hand"; grep '^stop' panel.a; fi
+
 # ---- the text format -------------------------------------------------------------
 cat >small.cmd <<'S'
 time_step = 0.1
