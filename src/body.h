@@ -21,6 +21,7 @@ typedef struct vrMotion {
     quat q0;       /* orientation at t0, body to world */
     vec3 L;        /* angular momentum, world frame, constant in free flight */
     double tcap;   /* time after t0 when |v| reaches max_linear (INFINITY: never) */
+    int over_cap;  /* |v0| above max_linear: a throw (SPEC 8), flying uncapped to its next event */
     double spin;   /* |L| / I_min, the bound on |omega| (vrBody_SpinBound) */
 } vrMotion;
 

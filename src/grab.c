@@ -152,7 +152,7 @@ static vrPose target(const vrGrab *g, const vrTrackerSample *h)
 
 /* b's state at t in w->update, on its target when it is there to
  * rounding (so that an unobstructed release is exactly where the hand
- * let go), else where it is (a static held it back) */
+ * let go), else where it is (a static held it back); its anchor from t */
 static vrBodyState *held_state(vrWorld *w, vrBody *b, const vrTrackerSample *h, double t)
 {
     vrBodyState *st = vrUpdate_Body(&w->update, b, t);
@@ -161,7 +161,10 @@ static vrBodyState *held_state(vrWorld *w, vrBody *b, const vrTrackerSample *h, 
     aim = target(&w->grab, h);
     if (vec3_dist(st->x, aim.p) <= SNAP_TOL * vr_max(1, vec3_len(aim.p)) && quat_angle_between(st->q, aim.q) <= SNAP_TOL)
         st->x = aim.p, st->q = aim.q;
-    st->raw = 0;
+    /* anchored as given, not clamped: the speed caps cut neither the
+     * rigid follow nor the throw (SPEC 8; motion.c flies an anchor above
+     * max_linear uncapped to its next event) */
+    st->raw = 1;
     st->resting = st->contact = st->hit = 0;
     st->island = -1;
     return st;

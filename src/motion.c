@@ -79,6 +79,17 @@ static double cap_time(vec3 v0, vec3 a, double vmax)
     return B > 0.0 ? -2.0 * C / (B + D) : (-B + D) / (2.0 * A);
 }
 
+/* SPEC 8: the speed caps do not cut a throw.  A throw is restored as the
+ * hand gave it (grab.c), so its anchor may be faster than max_linear; it
+ * then flies the true parabola, uncapped, to its next event, whose anchor
+ * the caps cut again.  An anchor the cap cut is at the cap to rounding,
+ * hence the margin; every holder decides alike from the anchor alone. */
+static void set_cap(vrMotion *m, double max_linear)
+{
+    m->over_cap = vec3_len(m->v0) > max_linear * (1 + 1e-12);
+    m->tcap = m->over_cap ? INFINITY : cap_time(m->v0, m->a, max_linear);
+}
+
 void vrBody_Position(const vrBody *b, double t, vec3 *x)
 {
     const vrMotion *m = &b->m;
@@ -234,7 +245,7 @@ int vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vrF
         if (w > f->max_angular) m->L = vec3_scale(L, f->max_angular / w), clamps++;
     }
     m->a = flight_accel(b, f->accel);
-    m->tcap = cap_time(m->v0, m->a, f->max_linear);
+    set_cap(m, f->max_linear);
     classify_rotation(b);
     reset_rotation_cache(b);
     note_stillness(b);
@@ -251,7 +262,7 @@ void vrBody_Restore(vrBody *b, double t0, vec3 x0, vec3 v0, quat q0, vec3 L, con
     m->q0 = q0;
     m->L = L;
     m->a = flight_accel(b, f->accel);
-    m->tcap = cap_time(m->v0, m->a, f->max_linear);
+    set_cap(m, f->max_linear);
     classify_rotation(b);
     reset_rotation_cache(b);
     note_stillness(b);
@@ -310,7 +321,7 @@ double vrBody_SpeedBound(const vrBody *b, double t, double span, double accel, d
     double s;
     vrBody_Velocity(b, t, &v);
     s = vec3_len(v) + accel * span;
-    return s < max_linear ? s : max_linear;
+    return s < max_linear || b->m.over_cap ? s : max_linear;
 }
 
 double vrBody_SpinBound(const vrBody *b) { return b->m.spin; }

@@ -27,7 +27,8 @@ static double bound_of(const vrBody *b, double t, double T, const vrFlight *f)
     if (!b || !vrBody_IsFree(b)) return -INFINITY;
     accel = vr_max(vec3_len(f->accel), vec3_len(b->m.a));
     vrBody_Velocity(b, t, &v);
-    speed = vr_min(f->max_linear, vec3_len(v) + accel * (T - t));
+    speed = vec3_len(v) + accel * (T - t);
+    if (!b->m.over_cap) speed = vr_min(f->max_linear, speed);   /* a throw flies uncapped (motion.c) */
     return (speed + vrSchedule_SpinReach(b)) * (1 + 1e-9) + 1e-12;
 }
 

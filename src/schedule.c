@@ -198,13 +198,20 @@ static double key_by_vertices(vrBody *a, vrBody *b, double t, vec3 n, double d, 
     return vrDistBound_Clear(&db, d + KEY_MARGIN, known, until);
 }
 
+/* the speed a body never exceeds in its flight: the cap, but a throw's
+ * (motion.c: uncapped to its next event) */
+static double speed_cap(const vrBody *b, const vrFlight *f)
+{
+    return !moves(b) ? 0 : b->m.over_cap ? INFINITY : f->max_linear;
+}
+
 static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f, int turning)
 {
     vrClosing whole, rate;
     vec3 va, vb;
     double known;
     whole.room = dist - d - KEY_MARGIN;
-    whole.cmax = (moves(a) ? f->max_linear : 0) + (moves(b) ? f->max_linear : 0);
+    whole.cmax = speed_cap(a, f) + speed_cap(b, f);
     if (whole.room <= 0) return t;
     if (whole.cmax <= 0) return INFINITY;
     vrBody_Velocity(a, t, &va);

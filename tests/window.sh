@@ -153,9 +153,7 @@ hand_end() { # hand_end LOGFILE N: the formula's hand point, N-th grab, pixel 40
         }' "$1"
 }
 open_session
-# max_linear: in select mode the ball is held now, and its catch-up between
-# two polls close in time can pass the default 8 m/s cap (a clamp note)
-say "max_linear = 50" "sphere ball" "radius = 0.5" "ures = 24" "vres = 24" "translate = (0,0,1)" window dump
+say "sphere ball" "radius = 0.5" "ures = 24" "vres = 24" "translate = (0,0,1)" window dump
 if wait_for "$tmp/out" '^ball,' && id=$(window_id); then
     sleep 0.3
     xdotool key --window "$id" g

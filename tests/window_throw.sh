@@ -32,9 +32,7 @@ top=$(pwd)
 start_x
 
 open_session
-# max_linear: the hand's samples come at the polls' uneven sim times, and the held
-# ball's catch-up between two close ones can pass the default 8 m/s cap
-say "max_linear = 50" "sphere ball" "radius = 0.5" "ures = 24" "vres = 24" "translate = (0,0,1)" window dump
+say "sphere ball" "radius = 0.5" "ures = 24" "vres = 24" "translate = (0,0,1)" window dump
 if wait_for "$tmp/out" '^ball,' && id=$(window_id); then
     sleep 0.3
     xdotool key --window "$id" g
