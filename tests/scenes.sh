@@ -16,7 +16,8 @@
 #     basketball's throw reaches the rim, bounces back and off the floor,
 #     office's cuboid ends on the table (not on the shelf) and has knocked
 #     table objects off, bounce's balls are hit and settle again on the chair
-#     and the pedestal, random's objects stay in the room with their energy;
+#     and the pedestal, random's objects stay in the room with their energy,
+#     throw's tracked hand lands the ball in the basket;
 #   - with heap = 0 every scene gives the same bits after 150 frames.
 # VROC_SCENES=DIR reads the scenes from DIR instead of scenes/ (to see a
 # check fail on a broken copy).  Run from the repository root with
@@ -222,6 +223,20 @@ story basketball basketball_throw_hits_the_basket_and_bounces_on_the_floor '
     END { if (near >= 0.3) printf "the ball never came within 0.3 m of the rim centre (closest %g)\n", near
           else if (!back) print "the ball did not bounce back from the basket"
           else if (!floor) print "the ball did not bounce on the floor" }'
+
+# ---- throw: a tracked hand takes the ball from the table into the basket -------
+# (SPEC 8's select mode; the scene's own `step 150` plays its track file:
+# the ball starts on the table at x = 0.2, the basket's walls stand at
+# x = 1.74 and 2.26, |y| < 0.25, 0.3 m high)
+run throw 60 10
+loads throw
+from_the_command_line throw
+never_inside throw
+story throw throw_ball_lands_in_the_basket '
+    END { split(fin["ball"], b, ",")
+          if (!(b[3] > 1.75 && b[3] < 2.25 && b[4] > -0.24 && b[4] < 0.24 && b[5] < 0.3))
+              print "the ball is not in the basket: " fin["ball"]
+          else if (b[16] == "moving") print "the ball still moves in the basket: " fin["ball"] }'
 
 # ---- office: the cuboid is knocked off the shelf onto the table ----------------
 run office 600 20
