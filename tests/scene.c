@@ -187,3 +187,46 @@ void vrScene_BoxBody(vrBody *b, int id, vrPolyhedron *p, vec3 half, int is_stati
     b->shape.half = half;
     vrBody_SetMassProperties(b, is_static ? -1 : 1, &p->inertia_unit, p->r_in, p->r_out);
 }
+
+/* ---- tracker samples and saved files ------------------------------------------- */
+
+vrTrackerSample vrScene_Sample(double t, vec3 p, quat q, unsigned buttons)
+{
+    vrTrackerSample s;
+    s.t = t;
+    s.position[0] = p.x, s.position[1] = p.y, s.position[2] = p.z;
+    s.orientation[0] = q.w, s.orientation[1] = q.x, s.orientation[2] = q.y, s.orientation[3] = q.z;
+    s.buttons = buttons;
+    return s;
+}
+
+/* the definition writer: one line naming the id, which the reader copies */
+void vrScene_DefLine(void *ctx, FILE *out, vrObjectId id)
+{
+    (void)ctx;
+    fprintf(out, "object %d\n", id);
+}
+
+/* b: a fresh world given a's settings and definitions, then the save's state lines */
+int vrScene_ReadSave(vrWorld *a, vrWorld *b, char *text)
+{
+    char err[400], *line, *next;
+    vrObjectId selected = VR_NO_OBJECT;
+    if (vrWorld_SetSettings(b, vrWorld_Settings(a), err, sizeof err) != 0) return -1;
+    for (line = text; line && *line; line = next) {
+        next = strchr(line, '\n');
+        if (next) *next++ = '\0';
+        while (*line == ' ') line++;
+        if (strncmp(line, "object ", 7) == 0) {
+            vrObjectDef d;
+            int id = atoi(line + 7);
+            vrWorld_GetObjectDef(a, id, &d);
+            if (vrWorld_CreateObject(b, vrWorld_ObjectName(a, id), d.type, &selected, err, sizeof err) != 0
+                || selected != id || vrWorld_SetObjectDef(b, id, &d, err, sizeof err) != 0)
+                return printf("    %s\n", err), -1;
+        } else if (strncmp(line, "state ", 6) == 0
+                   && vrWorld_ReadState(b, selected, line + 6, strlen(line + 6), err, sizeof err) != 0)
+            return printf("    %s\n", err), -1;
+    }
+    return 0;
+}

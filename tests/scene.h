@@ -60,4 +60,14 @@ void vrScene_SphereBody(struct vrBody *b, int id, double r, int is_static);
 /* a box of half extents `half` whose polyhedron is p, mass 1 (is_static: -1) */
 void vrScene_BoxBody(struct vrBody *b, int id, struct vrPolyhedron *p, vec3 half, int is_static);
 
+/* ---- tracker samples and saved files -------------------------------------------- */
+
+/* a tracker sample at t: position p, orientation q, the buttons */
+vrTrackerSample vrScene_Sample(double t, vec3 p, quat q, unsigned buttons);
+/* vrWorld_WriteSave's definition writer: `object ID`, which vrScene_ReadSave copies */
+void vrScene_DefLine(void *ctx, FILE *out, vrObjectId id);
+/* b, a fresh world, given a's settings and definitions, then the saved text's
+ * state lines (text is cut into lines in place): 0, or -1 and the error printed */
+int vrScene_ReadSave(vrWorld *a, vrWorld *b, char *text);
+
 #endif

@@ -14,16 +14,6 @@
 
 static char err[512];
 
-static vrTrackerSample sample(double t, vec3 p, quat q, unsigned buttons)
-{
-    vrTrackerSample s;
-    s.t = t;
-    s.position[0] = p.x, s.position[1] = p.y, s.position[2] = p.z;
-    s.orientation[0] = q.w, s.orientation[1] = q.x, s.orientation[2] = q.y, s.orientation[3] = q.z;
-    s.buttons = buttons;
-    return s;
-}
-
 static int push(vrWorld *w, const vrTrackerSample *s)
 {
     if (vrWorld_PushSample(w, VR_DEVICE_HAND, s, err, sizeof err) == 0) return 0;
@@ -39,7 +29,7 @@ static int straight_hand(vrWorld *w, vec3 from, vec3 u, int down, int up)
 {
     int k;
     for (k = 0; k <= 10; k++) {
-        vrTrackerSample s = sample(0.1 * k, vec3_madd(from, 0.1 * k, u), quat_identity(), k >= down && k < up);
+        vrTrackerSample s = vrScene_Sample(0.1 * k, vec3_madd(from, 0.1 * k, u), quat_identity(), k >= down && k < up);
         if (push(w, &s) != 0) return -1;
     }
     return 0;
@@ -114,7 +104,7 @@ static int test_turning_hand_throws_with_w_cross_r(void)
     ball = vrScene_Sphere(w, "ball", 0.25, vec3_make(r, 0, 1), vec3_zero(), 1, 1);
     ENSURE(ball != VR_NO_OBJECT);
     for (k = 0; k <= 10; k++) {
-        vrTrackerSample smp = sample(0.1 * k, hand, quat_from_axis_angle(z, om * 0.1 * k), k < 6);
+        vrTrackerSample smp = vrScene_Sample(0.1 * k, hand, quat_from_axis_angle(z, om * 0.1 * k), k < 6);
         ENSURE(push(w, &smp) == 0);
     }
     ENSURE(vrScene_Step(w, 10) == 0);
@@ -156,7 +146,7 @@ static int moving_hand(vrWorld *w, vec3 from, vec3 u, int n, int up)
 {
     int k;
     for (k = 0; k < n; k++) {
-        vrTrackerSample s = sample(0.05 * k, vec3_madd(from, 0.05 * k, u), quat_identity(), k < up);
+        vrTrackerSample s = vrScene_Sample(0.05 * k, vec3_madd(from, 0.05 * k, u), quat_identity(), k < up);
         if (push(w, &s) != 0) return -1;
     }
     return 0;
@@ -246,7 +236,7 @@ static int test_static_wall_stops_a_held_ball_which_slides_along_it(void)
     ball = vrScene_Sphere(w, "ball", 0.1, vec3_make(0, 0, 1), vec3_zero(), 1, 0);
     for (k = 0; k <= 20; k++) {
         double t = 0.05 * k;
-        vrTrackerSample s = sample(t, vec3_make(wall_hand_x(t), u.y * t, 1), quat_identity(), 1);
+        vrTrackerSample s = vrScene_Sample(t, vec3_make(wall_hand_x(t), u.y * t, 1), quat_identity(), 1);
         ENSURE(push(w, &s) == 0);
     }
     for (f = 1; f <= 20; f++) {
@@ -280,7 +270,7 @@ static int test_reselect_grabs_the_last_object_where_it_is(void)
         /* still until 0.3 s, then 1.5 m/s along +y (0.2 m out of the ball's reach at 0.5 s) */
         double y = k <= 3 ? 0 : 0.15 * (k - 3);
         unsigned buttons = k < 2 ? VR_BUTTON_TRIGGER : k >= 5 ? VR_BUTTON_RESELECT : 0;
-        vrTrackerSample s = sample(0.1 * k, vec3_make(0, y, 1), quat_identity(), buttons);
+        vrTrackerSample s = vrScene_Sample(0.1 * k, vec3_make(0, y, 1), quat_identity(), buttons);
         ENSURE(push(w, &s) == 0);
     }
     ENSURE(vrScene_Step(w, 4) == 0);
@@ -311,7 +301,7 @@ static int test_trigger_flies_the_view_outside_select_mode(void)
     ENSURE(vrWorld_SetSettings(w, &s, err, sizeof err) == 0);
     ENSURE(vrScene_Sphere(w, "ball", 0.1, vec3_make(0, 0, 1), vec3_zero(), 1, 0) != VR_NO_OBJECT);
     for (k = 0; k <= 10; k++) {
-        vrTrackerSample smp = sample(0.1 * k, vec3_make(0, 0, 1), q, k >= 2 && k < 7);
+        vrTrackerSample smp = vrScene_Sample(0.1 * k, vec3_make(0, 0, 1), q, k >= 2 && k < 7);
         ENSURE(push(w, &smp) == 0);
     }
     ENSURE(vrScene_Step(w, 5) == 0);
@@ -383,7 +373,7 @@ static vrWorld *paddle_scene(vrObjectId *hit, int heap, int gps)
     vrScene_Box(w, "box1", vec3_make(0.08, 0.08, 0.08), vec3_make(0.35, 0.3, 0.08), 1, 0);
     vrScene_Box(w, "paddle", vec3_make(0.2, 0.03, 0.06), vec3_make(-0.3, 0, 0.1), 1, 0);
     for (k = 0; k <= 40; k++) {
-        vrTrackerSample smp = sample(0.05 * k, vec3_make(-0.3 + 0.3 * 0.05 * k, 0, 0.1), quat_from_axis_angle(z, 2 * 0.05 * k), 1);
+        vrTrackerSample smp = vrScene_Sample(0.05 * k, vec3_make(-0.3 + 0.3 * 0.05 * k, 0, 0.1), quat_from_axis_angle(z, 2 * 0.05 * k), 1);
         if (push(w, &smp) != 0) return NULL;
     }
     return w;
@@ -455,38 +445,6 @@ static int test_filtered_hand_throws_with_the_filtered_motion(void)
 
 /* ---- save (SPEC 11: "save keeps grab state") ---------------------------------------- */
 
-/* the definition writer: one line naming the id, which the reader copies
- * (tests/test_save.c's way, the shell's definitions standing aside) */
-static void def_line(void *ctx, FILE *out, vrObjectId id)
-{
-    (void)ctx;
-    fprintf(out, "object %d\n", id);
-}
-
-/* b: a fresh world given a's settings and definitions, then the save's state lines */
-static int read_save(vrWorld *a, vrWorld *b, char *text)
-{
-    char *line, *next;
-    vrObjectId selected = VR_NO_OBJECT;
-    if (vrWorld_SetSettings(b, vrWorld_Settings(a), err, sizeof err) != 0) return -1;
-    for (line = text; line && *line; line = next) {
-        next = strchr(line, '\n');
-        if (next) *next++ = '\0';
-        while (*line == ' ') line++;
-        if (strncmp(line, "object ", 7) == 0) {
-            vrObjectDef d;
-            int id = atoi(line + 7);
-            vrWorld_GetObjectDef(a, id, &d);
-            if (vrWorld_CreateObject(b, vrWorld_ObjectName(a, id), d.type, &selected, err, sizeof err) != 0
-                || vrWorld_SetObjectDef(b, id, &d, err, sizeof err) != 0)
-                return printf("    %s\n", err), -1;
-        } else if (strncmp(line, "state ", 6) == 0
-                   && vrWorld_ReadState(b, selected, line + 6, strlen(line + 6), err, sizeof err) != 0)
-            return printf("    %s\n", err), -1;
-    }
-    return 0;
-}
-
 /* a ball held by a hand moving at constant velocity, saved at 0.3 s and
  * read into a fresh world (the file holds the hand's samples the run still
  * needs, `state sample`, and the grab, `state grab`), goes on bit for bit:
@@ -502,10 +460,10 @@ static int test_a_grab_saved_while_held_goes_on_bit_for_bit(void)
     vrScene_Box(a, "floor", vec3_make(3, 3, 0.1), vec3_make(0, 0, -0.1), -1, 0.5);
     ENSURE(vrScene_Sphere(a, "ball", 0.1, vec3_make(0, 0, 1), vec3_zero(), 1, 0.5) != VR_NO_OBJECT);
     ENSURE(straight_hand(a, from, u, 0, 6) == 0 && vrScene_Step(a, 3) == 0 && vrWorld_Held(a) != VR_NO_OBJECT);
-    ENSURE(out && vrWorld_WriteSave(a, out, def_line, NULL) == 0);
+    ENSURE(out && vrWorld_WriteSave(a, out, vrScene_DefLine, NULL) == 0);
     fclose(out);
     ENSURE(strstr(text, "state grab") && strstr(text, " held=1") && strstr(text, "state sample device=hand"));
-    ENSURE(read_save(a, b, text) == 0);
+    ENSURE(vrScene_ReadSave(a, b, text) == 0);
     ENSURE(vrWorld_Held(b) == vrWorld_Held(a));
     ENSURE(vrScene_Step(a, 12) == 0 && vrScene_Step(b, 12) == 0);
     ENSURE(vrWorld_Held(a) == VR_NO_OBJECT);

@@ -52,37 +52,6 @@ static int test_a_state_line_reads_vectors_hex_floats_and_refuses_nan(void)
     return 0;
 }
 
-/* the definition writer: one line naming the id, which the reader copies */
-static void def_line(void *ctx, FILE *out, vrObjectId id)
-{
-    (void)ctx;
-    fprintf(out, "object %d\n", id);
-}
-
-/* b: a fresh world given a's settings and definitions, then the save's state lines */
-static int read_save(vrWorld *a, vrWorld *b, char *text)
-{
-    char err[400], *line, *next;
-    vrObjectId selected = VR_NO_OBJECT;
-    if (vrWorld_SetSettings(b, vrWorld_Settings(a), err, sizeof err) != 0) return -1;
-    for (line = text; line && *line; line = next) {
-        next = strchr(line, '\n');
-        if (next) *next++ = '\0';
-        while (*line == ' ') line++;
-        if (strncmp(line, "object ", 7) == 0) {
-            vrObjectDef d;
-            int id = atoi(line + 7);
-            vrWorld_GetObjectDef(a, id, &d);
-            if (vrWorld_CreateObject(b, vrWorld_ObjectName(a, id), d.type, &selected, err, sizeof err) != 0
-                || selected != id || vrWorld_SetObjectDef(b, id, &d, err, sizeof err) != 0)
-                return printf("    %s\n", err), -1;
-        } else if (strncmp(line, "state ", 6) == 0
-                   && vrWorld_ReadState(b, selected, line + 6, strlen(line + 6), err, sizeof err) != 0)
-            return printf("    %s\n", err), -1;
-    }
-    return 0;
-}
-
 static int test_a_pile_saved_mid_run_goes_on_bit_for_bit_in_a_fresh_world(void)
 {
     vrWorld *a = vrScene_World(0.02, 0.02, 9.8), *b = vrWorld_Create();
@@ -104,10 +73,10 @@ static int test_a_pile_saved_mid_run_goes_on_bit_for_bit_in_a_fresh_world(void)
     ENSURE(vrScene_State(a, gone).state == VR_STATE_REST);   /* deleting a resting body crashed once */
     ENSURE(vrWorld_DeleteObject(a, gone) == 0);
     ENSURE(vrScene_Step(a, 5) == 0);
-    ENSURE(out && vrWorld_WriteSave(a, out, def_line, NULL) == 0);
+    ENSURE(out && vrWorld_WriteSave(a, out, vrScene_DefLine, NULL) == 0);
     fclose(out);
     ENSURE(strstr(text, "state gap") && strstr(text, "state warm") && strstr(text, " rest=1"));
-    ENSURE(read_save(a, b, text) == 0);
+    ENSURE(vrScene_ReadSave(a, b, text) == 0);
     ENSURE(vrScene_Step(a, 40) == 0 && vrScene_Step(b, 40) == 0);
     ENSURE(vrScene_SameDumps(a, b));
     sa = vrScene_Stats(a), sb = vrScene_Stats(b);
@@ -177,14 +146,14 @@ static int test_tracker_samples_and_refractory_sounds_go_on_after_a_save(void)
     vrScene_Sphere(a, "ball", 0.1, vec3_make(0, 0, 0.2), vec3_make(0.1, 0, 3), 1, 1);
     ENSURE(push_samples(a, 60) == 0);
     ENSURE(vrScene_Step(a, 7) == 0);
-    ENSURE(out && vrWorld_WriteSave(a, out, def_line, NULL) == 0);
+    ENSURE(out && vrWorld_WriteSave(a, out, vrScene_DefLine, NULL) == 0);
     fclose(out);
     for (p = text; (p = strstr(p, "state sample ")); p++) lines++;
     /* 60 samples a device, 0.037 s apart: 10 of each (from 0 and from
      * 0.011 s) are at or before 0.35 s, all but the last of them forgotten */
     ENSURE_MSG(lines == 2 * (60 - 9), "%d sample lines", lines);
     ENSURE(strstr(text, "state sound_pair a=lo b=ball t=0.3103"));
-    ENSURE(read_save(a, b, text) == 0);
+    ENSURE(vrScene_ReadSave(a, b, text) == 0);
     for (f = 0; f < 20; f++) {
         ENSURE(vrScene_Step(a, 1) == 0 && vrScene_Step(b, 1) == 0);
         ENSURE_MSG(same_pose(a, b, VR_DEVICE_HEAD) && same_pose(a, b, VR_DEVICE_HAND), "frame %d: poses differ", f);

@@ -25,16 +25,6 @@ static int write_file(char *path, size_t n, const char *name, const char *text)
     return fclose(f);
 }
 
-static vrTrackerSample sample(double t, vec3 p, quat q, unsigned buttons)
-{
-    vrTrackerSample s;
-    s.t = t;
-    s.position[0] = p.x, s.position[1] = p.y, s.position[2] = p.z;
-    s.orientation[0] = q.w, s.orientation[1] = q.x, s.orientation[2] = q.y, s.orientation[3] = q.z;
-    s.buttons = buttons;
-    return s;
-}
-
 /* positions interpolate linearly, orientations by slerp: a quarter turn
  * about z over 1 s is an eighth of a turn at 0.5 s and spins at pi/2 rad/s */
 static int test_pose_between_samples_is_lerp_and_slerp(void)
@@ -43,8 +33,8 @@ static int test_pose_between_samples_is_lerp_and_slerp(void)
     vrTrackerSample at;
     double v[3], w[3];
     quat q;
-    vrTrackerSample a = sample(1, vec3_make(0, 0, 1), quat_identity(), 1);
-    vrTrackerSample b = sample(2, vec3_make(2, -4, 1), quat_from_axis_angle(vec3_make(0, 0, 1), PI / 2), 0);
+    vrTrackerSample a = vrScene_Sample(1, vec3_make(0, 0, 1), quat_identity(), 1);
+    vrTrackerSample b = vrScene_Sample(2, vec3_make(2, -4, 1), quat_from_axis_angle(vec3_make(0, 0, 1), PI / 2), 0);
     ENSURE(vrTrack_Push(&tr, &a) == 0 && vrTrack_Push(&tr, &b) == 0);
     ENSURE(vrTrack_At(&tr, 1.5, &at) == 0);
     ENSURE_NEAR(at.position[0], 1, 1e-15);
@@ -69,8 +59,8 @@ static int test_slerp_takes_the_short_way(void)
     vrTrackerSample at, a, b;
     double v[3], w[3];
     quat q = quat_from_axis_angle(vec3_make(1, 0, 0), 0.2);
-    a = sample(0, vec3_zero(), quat_identity(), 0);
-    b = sample(1, vec3_zero(), quat_make(-q.w, -q.x, -q.y, -q.z), 0);
+    a = vrScene_Sample(0, vec3_zero(), quat_identity(), 0);
+    b = vrScene_Sample(1, vec3_zero(), quat_make(-q.w, -q.x, -q.y, -q.z), 0);
     ENSURE(vrTrack_Push(&tr, &a) == 0 && vrTrack_Push(&tr, &b) == 0);
     ENSURE(vrTrack_Velocity(&tr, 0.5, v, w) == 0);
     ENSURE_NEAR(w[0], 0.2, 1e-12);
@@ -86,7 +76,7 @@ static int test_slerp_takes_the_short_way(void)
 static int test_tracker_that_stops_sending_holds_its_last_pose(void)
 {
     vrWorld *w = vrScene_World(0.1, 0.01, 9.8);
-    vrTrackerSample s = sample(0.2, vec3_make(1, 2, 3), quat_identity(), 1), at;
+    vrTrackerSample s = vrScene_Sample(0.2, vec3_make(1, 2, 3), quat_identity(), 1), at;
     ENSURE(vrScene_Sphere(w, "ball", 0.1, vec3_make(0, 0, 5), vec3_zero(), 1, 1) != VR_NO_OBJECT);
     ENSURE(vrWorld_TrackerPose(w, VR_DEVICE_HAND, &at) == -1);
     ENSURE(vrWorld_PushSample(w, VR_DEVICE_HAND, &s, err, sizeof err) == 0);
@@ -183,7 +173,7 @@ static int test_bad_track_lines_name_file_and_line(void)
 static int test_head_pose_drives_the_view(void)
 {
     vrView v = vrView_Default();
-    vrTrackerSample head = sample(0, vec3_make(1, 2, 1.7), quat_from_axis_angle(vec3_make(0, 0, 1), PI / 2), 0);
+    vrTrackerSample head = vrScene_Sample(0, vec3_make(1, 2, 1.7), quat_from_axis_angle(vec3_make(0, 0, 1), PI / 2), 0);
     double dist = sqrt(8.0 * 8.0 + 2.0 * 2.0);   /* |look - eye| of the default view */
     vrView_FromHead(&v, &head);
     ENSURE(v.eye[0] == 1 && v.eye[1] == 2 && v.eye[2] == 1.7);
@@ -192,7 +182,7 @@ static int test_head_pose_drives_the_view(void)
     ENSURE_NEAR(v.look[2], 1.7, 1e-12);
     ENSURE_NEAR(v.up[2], 1, 1e-15);
     ENSURE_NEAR(v.focal, dist, 1e-12);
-    head = sample(0, vec3_zero(), quat_from_axis_angle(vec3_make(1, 0, 0), PI / 2), 0);   /* looking up */
+    head = vrScene_Sample(0, vec3_zero(), quat_from_axis_angle(vec3_make(1, 0, 0), PI / 2), 0);   /* looking up */
     v = vrView_Default();
     v.focal = 3;
     vrView_FromHead(&v, &head);
