@@ -35,8 +35,7 @@ static int get_vec(vrSaveLine *l, const char *key, vec3 *v, char *err, size_t n)
     return 0;
 }
 
-/* a unit quaternion, w first: an edited one must stay a rotation */
-static int get_quat(vrSaveLine *l, const char *key, quat *q, char *err, size_t n)
+int vrSave_GetQuat(vrSaveLine *l, const char *key, quat *q, char *err, size_t n)
 {
     double a[4];
     if (vrSaveLine_Numbers(l, key, a, 4, 0, err, n) != 0) return -1;
@@ -71,7 +70,7 @@ static void put_state(FILE *out, const vrBodyState *st)
 /* island: the island's lowest body id, -1 for none */
 static int get_state(vrSaveLine *l, int max_island, vrBodyState *st, char *err, size_t n)
 {
-    return get_vec(l, "x", &st->x, err, n) || get_vec(l, "v", &st->v, err, n) || get_quat(l, "q", &st->q, err, n)
+    return get_vec(l, "x", &st->x, err, n) || get_vec(l, "v", &st->v, err, n) || vrSave_GetQuat(l, "q", &st->q, err, n)
         || get_vec(l, "L", &st->L, err, n) || get_int(l, "rest", 0, 1, &st->resting, err, n)
         || get_int(l, "hit", 0, 1, &st->hit, err, n) || get_int(l, "contact", 0, 1, &st->contact, err, n)
         || get_int(l, "island", -1, max_island, &st->island, err, n) ? -1 : 0;
@@ -109,7 +108,7 @@ static int read_frame_pose(vrSaveLine *l, vrSavedBody *s, char *err, size_t n)
     quat q;
     s->have_frame_pose = vrSaveLine_Has(l, "frame_x") || vrSaveLine_Has(l, "frame_q");
     if (!s->have_frame_pose) return 0;
-    if (get_vec(l, "frame_x", &p, err, n) || get_quat(l, "frame_q", &q, err, n)) return -1;
+    if (get_vec(l, "frame_x", &p, err, n) || vrSave_GetQuat(l, "frame_q", &q, err, n)) return -1;
     s->frame_pose = vrPose_make(p, q);
     return 0;
 }

@@ -46,15 +46,9 @@ void vrSave_WritePanel(vrWorld *w, int id, FILE *out)
 
 static int get_pose(vrSaveLine *l, const char *pkey, vec3 *p, const char *qkey, quat *q, char *err, size_t n)
 {
-    double a[3], b[4];
-    if (vrSaveLine_Numbers(l, pkey, a, 3, 0, err, n) != 0 || vrSaveLine_Numbers(l, qkey, b, 4, 0, err, n) != 0)
-        return -1;
-    if (!(fabs(sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2] + b[3] * b[3]) - 1) <= 1e-9)) {
-        snprintf(err, n, "state panel: %s must be a unit quaternion (w, x, y, z)", qkey);
-        return -1;
-    }
+    double a[3];
+    if (vrSaveLine_Numbers(l, pkey, a, 3, 0, err, n) != 0 || vrSave_GetQuat(l, qkey, q, err, n) != 0) return -1;
     *p = vec3_make(a[0], a[1], a[2]);
-    *q = quat_make(b[0], b[1], b[2], b[3]);
     return 0;
 }
 

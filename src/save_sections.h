@@ -34,6 +34,8 @@ int vrSave_ReadPending(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);
 
 /* an object named by key's value: its id, or an error naming the name */
 int vrSave_GetObject(vrWorld *w, vrSaveLine *l, const char *key, int *id, char *err, size_t n);
+/* key's unit quaternion, w first (to 1e-9: an edited one must stay a rotation; save_body.c) */
+int vrSave_GetQuat(vrSaveLine *l, const char *key, quat *q, char *err, size_t n);
 
 void vrSave_WriteSamples(vrWorld *w, int id, FILE *out);
 int vrSave_ReadSample(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n);

@@ -51,11 +51,9 @@ static int get_device(vrSaveLine *l, int *dev, char *err, size_t n)
 /* a tracker's orientation is a unit quaternion: kept as read, bit for bit */
 static int get_orientation(vrSaveLine *l, double q[4], char *err, size_t n)
 {
-    if (vrSaveLine_Numbers(l, "q", q, 4, 0, err, n) != 0) return -1;
-    if (!(fabs(sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]) - 1) <= 1e-9)) {
-        snprintf(err, n, "state sample: q must be a unit quaternion (w, x, y, z)");
-        return -1;
-    }
+    quat r;
+    if (vrSave_GetQuat(l, "q", &r, err, n) != 0) return -1;
+    q[0] = r.w, q[1] = r.x, q[2] = r.y, q[3] = r.z;
     return 0;
 }
 
