@@ -72,6 +72,10 @@ long vrOwner_PairCount(const vrOwner *o);
  * has nothing in hand, so memory grows with n and the close pairs.  Set it
  * before the first body. */
 void vrOwner_SetLazy(vrOwner *o, int lazy);
+/* lazy: only the pairs (a < b) mine(ctx, a, b) accepts are this owner's
+ * (a worker's share of the deal, parallel/distribution.h); NULL, as the
+ * serial owner has it: every pair.  Set it before the first body. */
+void vrOwner_SetFilter(vrOwner *o, int (*mine)(const void *ctx, int a, int b), const void *ctx);
 /* lazy: the pairs of the held bodies, as of the poses at t, settled from
  * them (as vrOwner_AddPairAt) or flagged when a body is marked in pending
  * (by id; NULL: none).  -1 on no memory. */

@@ -105,6 +105,8 @@ struct vrOwner {
      * two of its bodies (not both static), but keeps its record only while
      * their boxes meet; a slot of o->pair with a = -1 is free */
     int lazy;
+    int (*mine)(const void *ctx, int a, int b);   /* which pairs are this owner's (NULL: all) */
+    const void *mine_ctx;
     vrIntList free_pairs;     /* free slots, to be used again */
     unsigned char *fresh;     /* by body id: its pairs are still to be made (at the next look at the poses) */
     int any_fresh;

@@ -16,7 +16,12 @@
  * made then.  A record carries nothing a result depends on across its
  * absence: the walk cache and the keys only say where and when to look (the
  * runs of heap = 0 and of any worker count agree with these).
- *   vrOwner_SetLazy, vrOwner_AddBody, vrOwner_MakePairsAt, vrOwner_MakeFresh
+ * A worker's lazy owner holds only its share of the pairs (the deal,
+ * parallel/distribution.c): `mine` says which, and every path that makes a
+ * record asks it (owns), so a worker makes records of its own pairs only;
+ * the serial owner's filter is none, every pair.
+ *   vrOwner_SetLazy, vrOwner_SetFilter, owns
+ *   vrOwner_AddBody, vrOwner_MakePairsAt, vrOwner_MakeFresh
  *   vrPair_Meet, vrOwner_MeetAll      a record made on meeting
  *   vrOwner_DropApart, drop            records that go */
 #include <stdlib.h>
@@ -24,7 +29,20 @@
 
 void vrOwner_SetLazy(vrOwner *o, int lazy) { o->lazy = lazy; }
 
+void vrOwner_SetFilter(vrOwner *o, int (*mine)(const void *ctx, int a, int b), const void *ctx)
+{
+    o->mine = mine;
+    o->mine_ctx = ctx;
+}
+
 static int both_static(const vrOwner *o, int x, int y) { return o->body[x]->is_static && o->body[y]->is_static; }
+
+/* the pair of x and y is one this owner holds: not both static, and its own */
+static int owns(const vrOwner *o, int x, int y)
+{
+    if (both_static(o, x, y)) return 0;
+    return !o->mine || o->mine(o->mine_ctx, x < y ? x : y, x < y ? y : x);
+}
 
 int vrOwner_AddBody(vrOwner *o, int id, vrBody *b)
 {
@@ -40,7 +58,7 @@ static void make_one(void *ctx, int x, int y)
 {
     vrMaker *m = ctx;
     int flagged = m->all_flagged || (m->pending && (m->pending[x] || m->pending[y]));
-    if (m->failed || vrPairMap_Find(&m->o->bp.map, vrPair_Order(x, y)) >= 0) return;
+    if (m->failed || !owns(m->o, x, y) || vrPairMap_Find(&m->o->bp.map, vrPair_Order(x, y)) >= 0) return;
     if (vrOwner_AddPairAt(m->o, x, y, m->t, flagged) != 0) m->failed = 1;
 }
 
@@ -74,7 +92,7 @@ int vrPair_Meet(vrOwner *o, int x, int y)
 {
     long long order = vrPair_Order(x, y);
     int pi = vrPairMap_Find(&o->bp.map, order);
-    if (pi >= 0 || !o->lazy || both_static(o, x, y)) return pi;
+    if (pi >= 0 || !o->lazy || !owns(o, x, y)) return pi;
     if (vrOwner_AddPairAt(o, x < y ? x : y, x < y ? y : x, 0, 1) != 0) {
         o->awake_lost = 1;     /* no memory: the next events look at every record */
         return -1;
@@ -86,7 +104,7 @@ int vrOwner_MeetAll(vrOwner *o, int id)
 {
     int y;
     for (y = 0; o->lazy && y < o->bodycap; y++)
-        if (y != id && o->body[y] && !both_static(o, id, y) && vrPair_Meet(o, id, y) < 0) return -1;
+        if (y != id && o->body[y] && owns(o, id, y) && vrPair_Meet(o, id, y) < 0) return -1;
     return 0;
 }
 

@@ -1,12 +1,14 @@
 /* setup.c — a setup round (SPEC 5): the pairs dealt among the live workers
- * (distribution.c), and each worker sent its setup — the definitions and
- * anchors of the objects of its pairs, the pairs, the parameters — which
- * it answers like a frame start.  A worker's pairs are settled from the
- * poses at the setup time (vrOwner_AddPairAt), or flagged when a body of
- * theirs changed since, so a setup at a frame start changes no result.
+ * (distribution.c: a function of the two ids, no list of pairs), and each
+ * worker sent its setup — the definitions and anchors of the objects of
+ * its pairs, the deal, the bodies changed since the owners last heard, the
+ * parameters — which it answers like a frame start.  A worker's pairs are
+ * settled from the poses at the setup time as their boxes meet there
+ * (vrOwner_MakePairsAt), or flagged when a body of theirs changed since,
+ * so a setup at a frame start changes no result.
  *
- *   deal          the live pairs to the live workers
- *   encode_setup  worker g's setup message
+ *   deal, put_deal  the live pairs to the live workers; the deal in a setup
+ *   encode_setup    worker g's setup message; encode_all every worker's
  *   retire_counts a setup gives every worker a new owner: its counts kept
  */
 #include <stdlib.h>
@@ -18,10 +20,14 @@
 #include "wire.h"
 #include "vroc_setup_t.h"
 
+/* appended, not looked for (vrUpdate_Body's search made a snapshot of
+ * 10,000 bodies 50 M comparisons): each caller adds a body once */
 int vrSgp_AddAnchor(vrUpdate *up, vrBody *b)
 {
-    vrBodyState *st = vrUpdate_Body(up, b, b->m.t0);
-    if (!st) return -1;
+    vrBodyState *st;
+    if (vrGrow((void **)&up->body, &up->cap, up->n + 1, sizeof *up->body) != 0) return -1;
+    st = &up->body[up->n++];
+    vrBody_Capture(b, b->m.t0, st);
     vrBody_CaptureAnchor(b, st);
     return 0;
 }
@@ -62,47 +68,51 @@ static void retire_counts(vrSgp *s)
     }
 }
 
-static int deal(const vrWorld *w, const vrSgp *s, vrDeal *d)
+static void deal(const vrWorld *w, const vrSgp *s, vrDeal *d)
 {
     int alive[VR_MAX_GPS], nalive = 0, i;
     for (i = 0; i < s->n; i++)
         if (s->gp[i].alive) alive[nalive++] = i;
-    return vrDistribution_Deal(d, &w->table, w->s.distribution, alive, nalive);
+    vrDistribution_Deal(d, &w->table, w->s.distribution, alive, nalive);
 }
 
-static int encode_setup(vrWorld *w, vrSgp *s, int g, const vrDeal *d)
+/* the deal into the message (its arrays stay d's) */
+static void put_deal(vroc_setup_t *m, vrDeal *d)
+{
+    m->improved = (int8_t)d->improved;
+    m->nalive = d->nalive;
+    m->alive = d->alive;
+    m->per = d->per;
+    m->groups = d->groups;
+    m->nblocks = d->improved ? d->groups * (d->groups + 1) / 2 : 0;
+    m->block_gp = d->block_gp;
+}
+
+/* Worker g's setup: the objects it needs (vrDeal_Share), their anchors,
+ * the deal and, of its objects, those marked in pending (their pairs start
+ * flagged, as vrOwner_MakePairsAt's pending) */
+static int encode_setup(vrWorld *w, vrSgp *s, int g, vrDeal *d, const unsigned char *pending)
 {
     vroc_setup_t m;
     vrWireStates ws;
     vrUpdate states;
-    vroc_body_def_t *defs;
-    char *need = calloc((size_t)w->table.n + 1, 1);
-    unsigned char *pending = vrTable_PendingMarks(&w->table, &w->pending);
-    int k, i, np = 0, r = -1;
+    vroc_body_def_t *defs = calloc((size_t)w->table.n + 1, sizeof *defs);
+    unsigned char *need = calloc((size_t)w->table.n + 1, 1);
+    int i, r = -1;
     vrParams p = vrSettings_Params(&w->s);
     memset(&m, 0, sizeof m);
     memset(&ws, 0, sizeof ws);
     vrUpdate_Init(&states);
-    for (k = 0; need && k < d->npairs; k++)
-        if (d->gp_of[k] == g) need[d->a[k]] = need[d->b[k]] = 1, np++;
-    m.a = malloc((size_t)(np + 1) * sizeof *m.a);
-    m.b = malloc((size_t)(np + 1) * sizeof *m.b);
-    m.flagged = malloc((size_t)(np + 1) * sizeof *m.flagged);
-    defs = calloc((size_t)w->table.n + 1, sizeof *defs);
-    if (need && pending && m.a && m.b && m.flagged && defs) {
-        for (k = 0; k < d->npairs; k++)
-            if (d->gp_of[k] == g) {
-                m.a[m.npairs] = d->a[k];
-                m.b[m.npairs] = d->b[k];
-                m.flagged[m.npairs++] = pending[d->a[k]] || pending[d->b[k]];
-            }
+    m.pending = malloc((size_t)(w->table.n + 1) * sizeof *m.pending);
+    if (need && defs && m.pending) {
+        s->gp[g].pairs = vrDeal_Share(d, &w->table, g, need);
         for (i = 0; i < w->table.n; i++)
             if (need[i]) {
                 vrWire_PutDef(&defs[m.nbodies++], i, &w->table.obj[i]->def, w->table.obj[i]->off_text);
+                if (pending[i]) m.pending[m.npending++] = i;
                 if (vrSgp_AddAnchor(&states, &w->table.obj[i]->body) != 0) break;
             }
         if (i == w->table.n && vrWire_PutStates(&ws, &states) == 0) {
-            s->gp[g].pairs = m.npairs;
             m.run = s->run;
             m.seq = s->seq;
             m.nonce = s->gp[g].nonce;
@@ -112,35 +122,41 @@ static int encode_setup(vrWorld *w, vrSgp *s, int g, const vrDeal *d)
             m.t = w->t;
             m.defs = defs;
             m.states = ws.m;
+            put_deal(&m, d);
             r = VR_ENCODE(&s->gp[g].setup, vroc_setup_t, &m);
         }
     }
     free(need);
-    free(pending);
-    free(m.a);
-    free(m.b);
-    free(m.flagged);
+    free(m.pending);
     free(defs);
     vrWire_FreeStates(&ws);
     vrUpdate_Free(&states);
     return r;
 }
 
+/* every live worker's setup, from one deal */
+static int encode_all(vrWorld *w, vrSgp *s)
+{
+    vrDeal d;
+    unsigned char *pending = vrTable_PendingMarks(&w->table, &w->pending);
+    int g;
+    if (!pending) return -1;
+    deal(w, s, &d);
+    for (g = 0; g < s->n; g++)
+        if (s->gp[g].alive && encode_setup(w, s, g, &d, pending) != 0) break;
+    free(pending);
+    return g == s->n ? 0 : -1;
+}
+
 int vrSgp_Setup(vrWorld *w, vrSgp *s, char *err, size_t n)
 {
     for (;;) {
-        int g, died;
-        vrDeal d;
+        int died;
         retire_counts(s);
         if (vrSgp_AliveCount(s) == 0) return snprintf(err, n, "all %d workers died; set gps = 0 to go on serially", s->n), -1;
         s->seq++;
         s->error[0] = 0;
-        if (deal(w, s, &d) != 0) g = -2;
-        else
-            for (g = 0; g < s->n; g++)
-                if (s->gp[g].alive && encode_setup(w, s, g, &d) != 0) break;
-        vrDistribution_Free(&d);
-        if (g != s->n) return snprintf(err, n, "out of memory"), -1;
+        if (encode_all(w, s) != 0) return snprintf(err, n, "out of memory"), -1;
         s->setup_round = 1;
         died = vrSgp_Exchange(s, WAIT_EARLIEST, -1);
         s->setup_round = 0;

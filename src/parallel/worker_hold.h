@@ -11,7 +11,8 @@
  * at the next span start); -1 when one is malformed */
 int vrWorker_ApplyStates(vrWorker *k, const vroc_body_state_t *states, int n);
 /* a setup's objects and pairs: built from their definitions, placed at
- * their states, pairs settled from the poses or flagged; -1 and err */
+ * their states, the pairs the setup's deal gives this worker made lazily
+ * (settled from the poses or flagged); -1 and err */
 int vrWorker_SetUp(vrWorker *k, const vroc_setup_t *m, char *err, size_t n);
 
 #endif

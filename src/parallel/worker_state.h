@@ -8,6 +8,7 @@
 #include <sys/types.h>
 #include "owner.h"
 #include "table.h"
+#include "distribution.h"
 #include "worker.h"
 
 #define HELLO_MS 100.0      /* announcements while free, heartbeats while busy */
@@ -23,6 +24,7 @@ struct vrWorker {
     const char *reply_channel;
     vrTable objects;              /* the objects of its pairs, at the SGP's ids */
     vrOwner *owner;
+    vrDeal deal;                  /* which pairs are its own (its owner's filter) */
     vrParams params;
     vrEvent first;                /* the first event it last reported */
     int has_first;

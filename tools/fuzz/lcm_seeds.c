@@ -1,5 +1,5 @@
 /* lcm_seeds.c — writes fuzz_lcm's first corpus into DIR: one session a
- * worker would see (setup of two spheres and their pair, a frame, an
+ * worker would see (setup of two spheres and their deal, a frame, an
  * advance, a forwarded update, contacts, shutdown) and one message of each
  * of the SGP's kinds, each well formed, so that the fuzzer starts from
  * messages that pass the nonce, run and sequence checks. */
@@ -62,7 +62,7 @@ static int session(const char *dir)
     vrParams par;
     vroc_body_def_t defs[2];
     vroc_body_state_t states[2];
-    int32_t a = 0, b = 1, flagged = 0, owed = 0;
+    int32_t alive = 0, owed = 0;
     vroc_setup_t s;
     vroc_frame_start_t f;
     vroc_advance_t adv = {RUN, 3, 0.05, 0, 0};
@@ -75,13 +75,13 @@ static int session(const char *dir)
     par.flight.max_angular = 4;
     par.use_heap = 1;
     memset(&s, 0, sizeof s);
-    s.run = RUN, s.seq = 1, s.nonce = 1, s.gp = 0, s.ngps = 1, s.nbodies = 2, s.npairs = 1;
+    s.run = RUN, s.seq = 1, s.nonce = 1, s.gp = 0, s.ngps = 1, s.nbodies = 2, s.nalive = 1, s.per = 1, s.groups = 1;
     vrWire_PutParams(&s.params, &par);
     vrWire_PutDef(&defs[0], 0, &def, NULL);
     vrWire_PutDef(&defs[1], 1, &def, NULL);
     state_at(&states[0], 0, -2);
     state_at(&states[1], 1, 2);
-    s.defs = defs, s.states = states, s.a = &a, s.b = &b, s.flagged = &flagged;
+    s.defs = defs, s.states = states, s.alive = &alive, s.block_gp = &owed, s.pending = &owed;
     PUT(REC_SETUP, vroc_setup_t, &s);
     memset(&f, 0, sizeof f);
     f.run = RUN, f.seq = 2, f.allow_instant = 1, f.states = states, f.owed = &owed;
