@@ -3,10 +3,12 @@
  * flying objects takes grows with the objects, not with the n(n-1)/2 pairs
  * (50 M for 10,000: gigabytes if each had a record); and the runs keep
  * their bits: heap on and off agree with objects created and deleted
- * mid-run at 10,000 objects, and the serial run agrees with workers (the
- * workers hold explicit pair lists, the serial owner lazy records: two
- * different books of the same pairs).  Frames per second and peak memory
- * are bench/bench_scale.c's. */
+ * mid-run at 10,000 objects, and the serial run agrees with workers, whose
+ * owners are lazy too, each making records only of the pairs the deal
+ * gives it (src/parallel/distribution.c, a function of the two ids): with
+ * 1, 2 and 3 workers, both distributions, through edits and a worker
+ * dying.  Workers' memory follows the objects too.  Frames per second
+ * and peak memory are bench/bench_scale.c's. */
 #define _DEFAULT_SOURCE
 #include <stdlib.h>
 #include <string.h>
@@ -97,10 +99,10 @@ static int test_heap_on_and_off_agree_at_10000_objects_with_edits(void)
 
 /* the peak resident memory (kB) of a fresh vroc ($VROC_BUILD/vroc, as
  * tests/run.sh sets it) that builds a room of n objects and flies it 3
- * frames: its VmHWM (peak_mem.h), read while it waits for more input
+ * frames, with gps workers in its own process (memq://): its VmHWM (peak_mem.h), read while it waits for more input
  * after the room's `stats`; -1 on failure (no vroc is a failure, not a
  * skip) */
-static long room_kb(int n, double side)
+static long room_kb(int n, double side, int gps)
 {
     const char *build = getenv("VROC_BUILD");
     char vroc[512], line[4096];
@@ -121,7 +123,8 @@ static long room_kb(int n, double side)
     to = fdopen(in[1], "w"), from = fdopen(out[0], "r");
     if (pid > 0 && to && from) {
         fprintf(to, "seed = 10000\ncollision_dist = 0.01\ntime_step = 0.05\nmax_linear = 1000\nmax_angular = 10000\n"
-                    "max_frames = 0\nroom = %.17g\nrandom %d\nstart\nstep 3\nstats\n", side, n);
+                    "max_frames = 0\nroom = %.17g\nrandom %d\ngps = %d\nlcm_url = memq://\nstart\nstep 3\nstats\n",
+                side, n, gps);
         fflush(to);
         while (!seen && fgets(line, sizeof line, from)) seen = strncmp(line, "frames=", 7) == 0;
         if (seen) kb = vrPeakMem_Kb(pid);
@@ -142,7 +145,7 @@ static long room_kb(int n, double side)
  * reports the release build's) */
 static int test_memory_grows_with_the_objects_not_the_pairs(void)
 {
-    long small = room_kb(BIG / 4, 60 / 1.5874), big = room_kb(BIG, 60);   /* 4^(1/3) = 1.5874 */
+    long small = room_kb(BIG / 4, 60 / 1.5874, 0), big = room_kb(BIG, 60, 0);   /* 4^(1/3) = 1.5874 */
     double per_object;
     ENSURE_MSG(small > 0 && big > small, "%ld kB, %ld kB (VROC_BUILD=%s)", small, big,
                getenv("VROC_BUILD") ? getenv("VROC_BUILD") : "unset");
@@ -154,8 +157,8 @@ static int test_memory_grows_with_the_objects_not_the_pairs(void)
     return 0;
 }
 
-/* serial (lazy records) against workers (lists of every pair they own)
- * through deletions and additions; in one process (memq://) */
+/* serial (lazy records) against workers (lazy records of the pairs dealt
+ * to them) through deletions and additions; in one process (memq://) */
 static unsigned long long hash_with(int gps, int n, vrStats *st)
 {
     vrWorld *w = flying_room(n, 8, 1);
@@ -188,10 +191,98 @@ static int test_serial_lazy_pairs_agree_with_workers_through_edits(void)
     return 0;
 }
 
+/* Two workers in the vroc process (memq://) at 10,000 objects: each is a
+ * copy of the objects it needs (all of them, at two workers) and records
+ * of its close pairs, so a worker costs about what the serial run does.
+ * With a record of every pair dealt to it, as workers had, each held 25 M
+ * (some 3 GB); at setup the SGP listed all 50 M. */
+static int test_a_worker_costs_memory_of_its_objects_not_its_pairs(void)
+{
+    long serial = room_kb(BIG, 60, 0), two = room_kb(BIG, 60, 2);
+    double per_gp = (two - serial) / 2.0;
+    ENSURE_MSG(serial > 0 && two > serial, "%ld kB serially, %ld kB with 2 workers", serial, two);
+    printf("    10,000 objects: %ld kB serially, %ld kB with 2 workers in the process: %.0f kB a worker\n", serial,
+           two, per_gp);
+    ENSURE_MSG(per_gp < 1.5 * serial, "%.0f kB a worker", per_gp);
+    return 0;
+}
+
+/* a room with gps workers (memq://) of distribution dist, flown 3
+ * frames, edited (every 37th object deleted, 20 balls born in their
+ * places), flown 3 more; kill: VROC_FAULT_KILL for the run ("" none) */
+static int run_workers(int n, double side, int heap, int gps, vrDistribution dist, const char *kill,
+                       unsigned long long *hash, vrStats *st)
+{
+    vrWorld *w = flying_room(n, side, heap);
+    vrSettings s;
+    int r = -1;
+    if (!w) return -1;
+    s = *vrWorld_Settings(w);
+    s.gps = gps;
+    s.distribution = dist;
+    snprintf(s.lcm_url, sizeof s.lcm_url, "memq://");
+    if (kill[0]) setenv("VROC_FAULT_KILL", kill, 1);
+    if (vrWorld_SetSettings(w, &s, NULL, 0) == 0 && vrScene_Step(w, 3) == 0 && replace_some(w, n, 5, 37, 20) == 0
+        && vrScene_Step(w, 3) == 0) {
+        *hash = vrScene_DumpHash(w);
+        *st = vrScene_Stats(w);
+        r = 0;
+    }
+    unsetenv("VROC_FAULT_KILL");
+    vrWorld_Destroy(w);
+    return r;
+}
+
+/* the workers' shares of the pairs (the deal's counts) add up to the
+ * logical count: no pair without an owner, none with two */
+static long long shares(const vrStats *st)
+{
+    long long sum = 0;
+    int i;
+    for (i = 0; i < st->gps && i < 64; i++) sum += st->gp_pairs[i];
+    return sum;
+}
+
+#define MID 2000
+
+/* 2,000 objects three times as dense as SPEC 10's room (25 m): serial,
+ * heap off, 1 worker (round robin), 2 (improved), 3 (round robin) of which
+ * worker 1 falls silent at the first frame after the edit (its pairs are
+ * dealt to the two others, the frame redone): one dump */
+static int test_lazy_workers_agree_with_serial_through_edits_and_a_death(void)
+{
+    static const struct { int heap, gps; vrDistribution dist; const char *kill, *what; } runs[] = {
+        {0, 0, VR_DIST_ROUND_ROBIN, "", "heap off"},
+        {1, 1, VR_DIST_ROUND_ROBIN, "", "1 worker"},
+        {1, 2, VR_DIST_IMPROVED, "", "2 workers, improved"},
+        {1, 3, VR_DIST_ROUND_ROBIN, "1:4", "3 workers, worker 1 dying"},
+    };
+    unsigned long long h0 = 0, h;
+    vrStats s0, st;
+    size_t k;
+    ENSURE(run_workers(MID, 25, 1, 0, VR_DIST_ROUND_ROBIN, "", &h0, &s0) == 0);
+    printf("    %d objects: %lld collisions, %lld records of %ld pairs serially\n", s0.objects, s0.collisions,
+           s0.live_pairs, s0.pairs);
+    ENSURE(s0.collisions > 20);
+    ENSURE(s0.objects == 6 + MID - (MID - 5 + 36) / 37 + 20);
+    for (k = 0; k < sizeof runs / sizeof runs[0]; k++) {
+        ENSURE_MSG(run_workers(MID, 25, runs[k].heap, runs[k].gps, runs[k].dist, runs[k].kill, &h, &st) == 0, "%s",
+                   runs[k].what);
+        ENSURE_MSG(h == h0, "%s: dump %llx, serial %llx", runs[k].what, h, h0);
+        ENSURE(st.collisions == s0.collisions);
+        if (runs[k].gps > 0)
+            ENSURE_MSG(shares(&st) == st.pairs, "%s: shares %lld of %ld pairs", runs[k].what, shares(&st), st.pairs);
+    }
+    ENSURE_MSG(st.gp_copies[1] == 0 && st.gp_pairs[0] > 0 && st.gp_pairs[2] > 0, "worker 1 was to die");
+    return 0;
+}
+
 static const vrTest tests[] = {
     TEST(test_heap_on_and_off_agree_at_10000_objects_with_edits),
     TEST(test_memory_grows_with_the_objects_not_the_pairs),
     TEST(test_serial_lazy_pairs_agree_with_workers_through_edits),
+    TEST(test_a_worker_costs_memory_of_its_objects_not_its_pairs),
+    TEST(test_lazy_workers_agree_with_serial_through_edits_and_a_death),
 };
 
 const vrTestSuite vrSuite_Scale = {"scale", tests, TEST_COUNT(tests), NULL, NULL, 0};
