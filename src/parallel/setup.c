@@ -8,7 +8,9 @@
  * so a setup at a frame start changes no result.
  *
  *   deal, put_deal  the live pairs to the live workers; the deal in a setup
- *   encode_setup    worker g's setup message; encode_all every worker's
+ *   plan_share      a worker's objects, cut into parts of about 60 kB
+ *   encode_part     part k of a worker's setup
+ *   send_parts      the parts, an exchange each; set_up_all, the round
  *   retire_counts a setup gives every worker a new owner: its counts kept
  */
 #include <stdlib.h>
@@ -88,45 +90,74 @@ static void put_deal(vroc_setup_t *m, vrDeal *d)
     m->block_gp = d->block_gp;
 }
 
-/* Worker g's setup: the objects it needs (vrDeal_Share), their anchors,
- * the deal and, of its objects, those marked in pending (their pairs start
- * flagged, as vrOwner_MakePairsAt's pending) */
-static int encode_setup(vrWorld *w, vrSgp *s, int g, vrDeal *d, const unsigned char *pending)
+/* A setup part's budget: bursts of UDP multicast much past the kernel's
+ * default receive buffer (208 kB) are lost whole, and a lost part is sent
+ * again, so parts stay near one LCM fragment.  A body's definition and
+ * anchor encode to about 250 bytes, plus its OFF text. */
+#define PART_BYTES 60000
+#define BODY_BYTES 260
+
+/* worker g's objects in id order (its share of the deal), cut into parts
+ * starting at start[0..nparts), start[nparts] = n */
+typedef struct vrShare { int *ids, n, *start, nparts; } vrShare;
+
+static int plan_share(const vrWorld *w, vrSgp *s, const vrDeal *d, int g, unsigned char *need, vrShare *sh)
 {
+    int i, bytes = 0;
+    sh->ids = malloc((size_t)(w->table.n + 1) * sizeof *sh->ids);
+    sh->start = malloc((size_t)(w->table.n + 2) * sizeof *sh->start);
+    if (!sh->ids || !sh->start) return -1;
+    s->gp[g].pairs = (int)vrDeal_Share(d, &w->table, g, need);
+    sh->start[0] = 0;
+    for (i = 0; i < w->table.n; i++) {
+        const char *off = w->table.obj[i] ? w->table.obj[i]->off_text : NULL;
+        int size = BODY_BYTES + (off ? (int)strlen(off) : 0);
+        if (!need[i]) continue;
+        if (sh->n > 0 && bytes + size > PART_BYTES) sh->start[++sh->nparts] = sh->n, bytes = 0;
+        bytes += size;
+        sh->ids[sh->n++] = i;
+    }
+    sh->start[++sh->nparts] = sh->n;   /* a worker with no objects still has a part, empty */
+    return 0;
+}
+
+/* Part k of worker g's setup: its objects' definitions and anchors, those
+ * of them marked in pending (their pairs start flagged, as
+ * vrOwner_MakePairsAt's pending), the deal and the settings */
+static int encode_part(vrWorld *w, vrSgp *s, int g, vrDeal *d, const unsigned char *pending, const vrShare *sh,
+                       int k, int parts)
+{
+    int lo = k < sh->nparts ? sh->start[k] : sh->n, hi = k < sh->nparts ? sh->start[k + 1] : sh->n, j, r = -1;
     vroc_setup_t m;
     vrWireStates ws;
     vrUpdate states;
-    vroc_body_def_t *defs = calloc((size_t)w->table.n + 1, sizeof *defs);
-    unsigned char *need = calloc((size_t)w->table.n + 1, 1);
-    int i, r = -1;
+    vroc_body_def_t *defs = calloc((size_t)(hi - lo + 1), sizeof *defs);
     vrParams p = vrSettings_Params(&w->s);
     memset(&m, 0, sizeof m);
     memset(&ws, 0, sizeof ws);
     vrUpdate_Init(&states);
-    m.pending = malloc((size_t)(w->table.n + 1) * sizeof *m.pending);
-    if (need && defs && m.pending) {
-        s->gp[g].pairs = vrDeal_Share(d, &w->table, g, need);
-        for (i = 0; i < w->table.n; i++)
-            if (need[i]) {
-                vrWire_PutDef(&defs[m.nbodies++], i, &w->table.obj[i]->def, w->table.obj[i]->off_text);
-                if (pending[i]) m.pending[m.npending++] = i;
-                if (vrSgp_AddAnchor(&states, &w->table.obj[i]->body) != 0) break;
-            }
-        if (i == w->table.n && vrWire_PutStates(&ws, &states) == 0) {
-            m.run = s->run;
-            m.seq = s->seq;
-            m.nonce = s->gp[g].nonce;
-            m.gp = g;
-            m.ngps = s->n;
-            vrWire_PutParams(&m.params, &p);
-            m.t = w->t;
-            m.defs = defs;
-            m.states = ws.m;
-            put_deal(&m, d);
-            r = VR_ENCODE(&s->gp[g].setup, vroc_setup_t, &m);
-        }
+    m.pending = malloc((size_t)(hi - lo + 1) * sizeof *m.pending);
+    for (j = lo; defs && m.pending && j < hi; j++) {
+        int i = sh->ids[j];
+        vrWire_PutDef(&defs[m.nbodies++], i, &w->table.obj[i]->def, w->table.obj[i]->off_text);
+        if (pending[i]) m.pending[m.npending++] = i;
+        if (vrSgp_AddAnchor(&states, &w->table.obj[i]->body) != 0) break;
     }
-    free(need);
+    if (defs && m.pending && j == hi && vrWire_PutStates(&ws, &states) == 0) {
+        m.run = s->run;
+        m.seq = s->seq;
+        m.nonce = s->gp[g].nonce;
+        m.gp = g;
+        m.ngps = s->n;
+        m.part = k;
+        m.parts = parts;
+        vrWire_PutParams(&m.params, &p);
+        m.t = w->t;
+        m.defs = defs;
+        m.states = ws.m;
+        put_deal(&m, d);
+        r = VR_ENCODE(&s->gp[g].setup, vroc_setup_t, &m);
+    }
     free(m.pending);
     free(defs);
     vrWire_FreeStates(&ws);
@@ -134,33 +165,61 @@ static int encode_setup(vrWorld *w, vrSgp *s, int g, vrDeal *d, const unsigned c
     return r;
 }
 
-/* every live worker's setup, from one deal */
-static int encode_all(vrWorld *w, vrSgp *s)
+/* the parts, one exchange each, to every live worker: 0 when all are set
+ * up (or one answered an error, in s->error), 1 when a worker died, -1
+ * on no memory */
+static int send_parts(vrWorld *w, vrSgp *s, vrDeal *d, const unsigned char *pending, const vrShare *sh, int parts)
+{
+    int g, k;
+    for (k = 0; k < parts; k++) {
+        int died;
+        s->seq++;
+        s->error[0] = 0;
+        for (g = 0; g < s->n; g++)
+            if (s->gp[g].alive && encode_part(w, s, g, d, pending, &sh[g], k, parts) != 0) return -1;
+        s->setup_round = 1;
+        died = vrSgp_Exchange(s, WAIT_EARLIEST, -1);
+        s->setup_round = 0;
+        if (died) return 1;
+        if (s->error[0]) return 0;
+    }
+    return 0;
+}
+
+/* every live worker set up from one deal */
+static int set_up_all(vrWorld *w, vrSgp *s)
 {
     vrDeal d;
+    vrShare sh[VR_MAX_GPS];
     unsigned char *pending = vrTable_PendingMarks(&w->table, &w->pending);
-    int g;
-    if (!pending) return -1;
+    unsigned char *need = calloc((size_t)w->table.n + 1, 1);
+    int g, parts = 1, r = -1;
+    memset(sh, 0, sizeof sh);
     deal(w, s, &d);
-    for (g = 0; g < s->n; g++)
-        if (s->gp[g].alive && encode_setup(w, s, g, &d, pending) != 0) break;
+    for (g = 0; pending && need && g < s->n; g++) {
+        if (!s->gp[g].alive) continue;
+        if (plan_share(w, s, &d, g, need, &sh[g]) != 0) break;
+        if (sh[g].nparts > parts) parts = sh[g].nparts;
+    }
+    if (g == s->n) r = send_parts(w, s, &d, pending, sh, parts);
+    for (g = 0; g < s->n; g++) {
+        free(sh[g].ids);
+        free(sh[g].start);
+    }
     free(pending);
-    return g == s->n ? 0 : -1;
+    free(need);
+    return r;
 }
 
 int vrSgp_Setup(vrWorld *w, vrSgp *s, char *err, size_t n)
 {
     for (;;) {
-        int died;
+        int r;
         retire_counts(s);
         if (vrSgp_AliveCount(s) == 0) return snprintf(err, n, "all %d workers died; set gps = 0 to go on serially", s->n), -1;
-        s->seq++;
-        s->error[0] = 0;
-        if (encode_all(w, s) != 0) return snprintf(err, n, "out of memory"), -1;
-        s->setup_round = 1;
-        died = vrSgp_Exchange(s, WAIT_EARLIEST, -1);
-        s->setup_round = 0;
-        if (died) continue;              /* deal again among the survivors */
+        r = set_up_all(w, s);
+        if (r < 0) return snprintf(err, n, "out of memory"), -1;
+        if (r > 0) continue;             /* deal again among the survivors */
         if (s->error[0]) return snprintf(err, n, "%s", s->error), -1;
         break;
     }

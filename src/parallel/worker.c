@@ -243,6 +243,7 @@ void vrWorker_Free(vrWorker *k)
     vrUpdate_Free(&k->scratch);
     vrBuf_Free(&k->reply);
     free(k->ids);
+    free(k->setup_pending);
     free(k);
 }
 

@@ -10,9 +10,10 @@
 /* the SGP's states onto the bodies held here (their pairs are evaluated
  * at the next span start); -1 when one is malformed */
 int vrWorker_ApplyStates(vrWorker *k, const vroc_body_state_t *states, int n);
-/* a setup's objects and pairs: built from their definitions, placed at
- * their states, the pairs the setup's deal gives this worker made lazily
- * (settled from the poses or flagged); -1 and err */
+/* a setup part (in order from part 0): its objects built from their
+ * definitions and placed at their states; after the last, the owner of
+ * the pairs the setup's deal gives this worker, made lazily (settled from
+ * the poses or flagged); -1 and err */
 int vrWorker_SetUp(vrWorker *k, const vroc_setup_t *m, char *err, size_t n);
 
 #endif

@@ -25,6 +25,8 @@ struct vrWorker {
     vrTable objects;              /* the objects of its pairs, at the SGP's ids */
     vrOwner *owner;
     vrDeal deal;                  /* which pairs are its own (its owner's filter) */
+    int setup_next;               /* the setup part expected next (-1: none before a part 0) */
+    int *setup_pending, nsetup_pending, setup_pending_cap;   /* the setup's pending bodies so far */
     vrParams params;
     vrEvent first;                /* the first event it last reported */
     int has_first;

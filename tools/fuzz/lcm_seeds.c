@@ -75,7 +75,7 @@ static int session(const char *dir)
     par.flight.max_angular = 4;
     par.use_heap = 1;
     memset(&s, 0, sizeof s);
-    s.run = RUN, s.seq = 1, s.nonce = 1, s.gp = 0, s.ngps = 1, s.nbodies = 2, s.nalive = 1, s.per = 1, s.groups = 1;
+    s.run = RUN, s.seq = 1, s.nonce = 1, s.gp = 0, s.ngps = 1, s.nbodies = 2, s.nalive = 1, s.per = 1, s.groups = 1, s.parts = 1;
     vrWire_PutParams(&s.params, &par);
     vrWire_PutDef(&defs[0], 0, &def, NULL);
     vrWire_PutDef(&defs[1], 1, &def, NULL);
