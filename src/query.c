@@ -107,7 +107,6 @@ void vrWorld_GetStats(const vrWorld *cw, vrStats *st)
     }
     if (w->owner) st->live_pairs = vrOwner_PairCount(w->owner);
     if (w->sgp) vrSgp_Stats(w->sgp, st);
-    for (i = 0; i < st->gps && i < 64; i++) st->live_pairs += st->gp_pairs[i];
     st->collisions = w->collisions;
     st->island_steps = w->island_steps;
     st->island_contacts = w->island_contacts;

@@ -76,6 +76,7 @@ static void take_earliest(vrSgp *s, const vroc_earliest_t *m)
     g->now.checks = m->checks;
     g->now.heap_pops = m->heap_pops;
     g->copies = m->copies;
+    g->records = m->records;
     note_overlaps(s, m);
     note_error(s, m->gp, m->error);
 }

@@ -286,7 +286,7 @@ void vrSgp_Stats(const vrSgp *s, vrStats *st)
         st->klu_solves += c.solves;
         st->klu_refactors += c.refactors;
         st->klu_factors += c.factors;
-        if (g->alive) st->copies += g->copies;
+        if (g->alive) st->copies += g->copies, st->live_pairs += g->records;
     }
 }
 

@@ -35,7 +35,8 @@ typedef struct vrGpInfo {
     vec3 point;
     vrGpCounts now;             /* of its owner, as it last said */
     vrGpCounts before;          /* of the owners it had before: a setup makes a new one */
-    int copies, pairs;
+    int copies, pairs;          /* its objects; its share of the pairs (the deal's count) */
+    long long records;          /* of its share, the pairs with a record now (lazy, SPEC 10) */
     vrBuf setup;                /* its setup during a setup round */
 } vrGpInfo;
 

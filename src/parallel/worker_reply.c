@@ -52,6 +52,7 @@ void vrWorker_SendEarliest(vrWorker *k, int64_t seq, int found, const vrEvent *e
     m.checks = os.checks;
     m.heap_pops = os.heap_pops;
     m.copies = k->owner ? vrOwner_BodyCount(k->owner) : 0;
+    m.records = k->owner ? vrOwner_PairCount(k->owner) : 0;
     m.noverlap = noverlap;
     m.a = a;
     m.b = b;
