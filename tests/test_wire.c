@@ -16,7 +16,7 @@
 #include "../tools/fuzz/lcm_records.h"
 
 #define FRAME_NSTATES_AT 74   /* hash, run, seq, t (8 each), grid (40), two int8 */
-#define EARLIEST_STRING_AT 102 /* hash ... noverlap (102 bytes: approach and point are 32), with noverlap = 0 */
+#define EARLIEST_STRING_AT 110 /* hash ... noverlap (110 bytes: approach and point are 32, records 8), with noverlap = 0 */
 
 static void put_be32(unsigned char *b, unsigned v)
 {
