@@ -181,11 +181,14 @@ build/fuzz/%: export AFL_QUIET = 1
 # AFL++'s persistent-mode macros are not ISO C (statement expressions)
 build/fuzz/tools/fuzz/%.o: WARN += -Wno-pedantic -Wno-gnu-statement-expression
 build/fuzz/tools/fuzz/%.o: INCS += -Ishell -Isrc/parallel
-build/fuzz/tools/fuzz/%.o: | build/fuzz.stamp
 build/fuzz.stamp: tools/install-deps.sh
 	@sh tools/install-deps.sh fuzz
 	@mkdir -p build && touch $@
-$(fuzz_OBJ): | build/fuzz.stamp
+# every object afl-clang-fast compiles waits for it to be installed (an
+# order-only prerequisite of a pattern without a recipe would be a rule of
+# its own, not one added to build/fuzz/%.o's: a fresh machine's -j2 build
+# then ran afl-clang-fast before the stamp had installed it)
+$(fuzz_OBJ) $(patsubst %.c,build/fuzz/%.o,$(SHELL_SRC) $(wildcard tools/fuzz/*.c)): | build/fuzz.stamp
 
 build/fuzz/fuzz-shell: build/fuzz/tools/fuzz/fuzz_shell.o $(patsubst %.c,build/fuzz/%.o,$(filter-out shell/main.c,$(SHELL_SRC))) build/fuzz/libvroc.a
 	$(CC) -o $@ $^ $(RL_LIBS) $(LIBS)

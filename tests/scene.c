@@ -150,6 +150,22 @@ int vrScene_SameDumps(vrWorld *a, vrWorld *b)
     return same;
 }
 
+int vrScene_StepRuns(vrWorld **w, int nw, long n)
+{
+    int i;
+    for (i = 0; i < nw; i++)
+        if (!w[i] || vrScene_Step(w[i], n) != 0) return printf("    run %d of %d: %s\n", i, nw, w[i] ? "step failed" : "not made"), -1;
+    return 0;
+}
+
+int vrScene_SameRunsFreed(vrWorld **w, int nw)
+{
+    int i, same = 1;
+    for (i = 1; i < nw; i++) same = same && vrScene_SameDumps(w[0], w[i]);
+    for (i = 0; i < nw; i++) vrWorld_Destroy(w[i]);
+    return same;
+}
+
 static unsigned long long fnv(const char *s, size_t n)
 {
     unsigned long long h = 1469598103934665603ULL;

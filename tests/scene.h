@@ -50,6 +50,12 @@ vec3 vrScene_LinearVel(const vrObjectState *s);
 char *vrScene_Dump(vrWorld *w);
 /* 1 when a and b dump the same bits (both printed when not) */
 int vrScene_SameDumps(vrWorld *a, vrWorld *b);
+/* runs of one scene in several modes (serial, heap off, workers ...):
+ * each stepped n frames; 0, or -1 when one is missing or fails (printed) */
+int vrScene_StepRuns(vrWorld **w, int nw, long n);
+/* 1 when every run dumps the first's bits (printed when not); the worlds
+ * are destroyed either way */
+int vrScene_SameRunsFreed(vrWorld **w, int nw);
 /* the FNV-1a hash of the world's dump */
 unsigned long long vrScene_DumpHash(vrWorld *w);
 

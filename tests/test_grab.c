@@ -324,16 +324,11 @@ static int test_trigger_flies_the_view_outside_select_mode(void)
 static int test_grab_scene_same_bits_serial_heap_off_and_two_workers(void)
 {
     vrObjectId ball, box[STACK];
-    vrWorld *serial = stack_scene(&ball, box, 1, 0), *no_heap = stack_scene(&ball, box, 0, 0);
-    vrWorld *two = stack_scene(&ball, box, 1, 2);
-    ENSURE(serial && no_heap && two);
-    ENSURE(vrScene_Step(serial, 40) == 0 && vrScene_Step(no_heap, 40) == 0 && vrScene_Step(two, 40) == 0);
-    ENSURE(vrScene_State(serial, box[1]).position[0] > 0.3);   /* the grab did something */
-    ENSURE(vrScene_SameDumps(serial, no_heap));
-    ENSURE(vrScene_SameDumps(serial, two));
-    vrWorld_Destroy(serial);
-    vrWorld_Destroy(no_heap);
-    vrWorld_Destroy(two);
+    vrWorld *w[3];
+    w[0] = stack_scene(&ball, box, 1, 0), w[1] = stack_scene(&ball, box, 0, 0), w[2] = stack_scene(&ball, box, 1, 2);
+    ENSURE(vrScene_StepRuns(w, 3, 40) == 0);
+    ENSURE(vrScene_State(w[0], box[1]).position[0] > 0.3);   /* the grab did something */
+    ENSURE(vrScene_SameRunsFreed(w, 3));
     return 0;
 }
 
@@ -384,18 +379,14 @@ static vrWorld *paddle_scene(vrObjectId *hit, int heap, int gps)
 static int test_turning_paddle_same_bits_serial_heap_off_and_two_workers(void)
 {
     vrObjectId hit;
-    vrWorld *serial = paddle_scene(&hit, 1, 0), *no_heap = paddle_scene(&hit, 0, 0), *two = paddle_scene(&hit, 1, 2);
+    vrWorld *w[3];
     vec3 p;
-    ENSURE(serial && no_heap && two);
-    ENSURE(vrScene_Step(serial, 40) == 0 && vrScene_Step(no_heap, 40) == 0 && vrScene_Step(two, 40) == 0);
-    ENSURE(vrWorld_Held(serial) != VR_NO_OBJECT);
-    p = vec3_make(vrScene_State(serial, hit).position[0], vrScene_State(serial, hit).position[1], 0);
+    w[0] = paddle_scene(&hit, 1, 0), w[1] = paddle_scene(&hit, 0, 0), w[2] = paddle_scene(&hit, 1, 2);
+    ENSURE(vrScene_StepRuns(w, 3, 40) == 0);
+    ENSURE(vrWorld_Held(w[0]) != VR_NO_OBJECT);
+    p = vec3_make(vrScene_State(w[0], hit).position[0], vrScene_State(w[0], hit).position[1], 0);
     ENSURE_MSG(vec3_dist(p, vec3_make(0.3, 0, 0)) > 0.05, "the paddle did not move box0 (%g, %g)", p.x, p.y);
-    ENSURE(vrScene_SameDumps(serial, no_heap));
-    ENSURE(vrScene_SameDumps(serial, two));
-    vrWorld_Destroy(serial);
-    vrWorld_Destroy(no_heap);
-    vrWorld_Destroy(two);
+    ENSURE(vrScene_SameRunsFreed(w, 3));
     return 0;
 }
 
@@ -535,19 +526,15 @@ static vrWorld *fast_throw_scene(int heap, int gps)
 
 static int test_a_fast_throw_bounces_off_a_thin_wall(void)
 {
-    vrWorld *serial = fast_throw_scene(1, 0), *no_heap = fast_throw_scene(0, 0), *two = fast_throw_scene(1, 2);
+    vrWorld *w[3];
     vrObjectState s;
-    ENSURE(serial && no_heap && two);
-    ENSURE(vrScene_Step(serial, 12) == 0 && vrScene_Step(no_heap, 12) == 0 && vrScene_Step(two, 12) == 0);
-    s = vrScene_State(serial, vrWorld_FindObject(serial, "ball"));
+    w[0] = fast_throw_scene(1, 0), w[1] = fast_throw_scene(0, 0), w[2] = fast_throw_scene(1, 2);
+    ENSURE(vrScene_StepRuns(w, 3, 12) == 0);
+    s = vrScene_State(w[0], vrWorld_FindObject(w[0], "ball"));
     ENSURE(s.position[0] < 8.0 - 0.01 - 0.1 + 1e-3);
     ENSURE_NEAR(s.linear_vel[0], -8, 1e-9);
-    ENSURE(vrScene_Stats(serial).clamps >= 1 && vrScene_Stats(serial).collisions >= 1);
-    ENSURE(vrScene_SameDumps(serial, no_heap));
-    ENSURE(vrScene_SameDumps(serial, two));
-    vrWorld_Destroy(serial);
-    vrWorld_Destroy(no_heap);
-    vrWorld_Destroy(two);
+    ENSURE(vrScene_Stats(w[0]).clamps >= 1 && vrScene_Stats(w[0]).collisions >= 1);
+    ENSURE(vrScene_SameRunsFreed(w, 3));
     return 0;
 }
 
