@@ -8,8 +8,8 @@
  *   held                  whether an object is held
  *   vrWorker_ApplyStates  the SGP's states onto the bodies held here
  *   get_deal, mine        a setup's deal; the owner's filter
- *   take_part             a setup part's objects, built, placed, given their states
- *   make_owner            the owner on the last part: the pairs as of the poses
+ *   build_part, place_part  a setup part's objects, built, placed, given their states
+ *   hold_all, make_owner  the owner on the last part: the pairs as of the poses
  *   start_setup, vrWorker_SetUp   a setup, part by part (setup_t.lcm)
  */
 #include <stdlib.h>
@@ -73,9 +73,9 @@ static int mine(const void *ctx, int a, int b)
     return vrDeal_Owner(&k->deal, a, b) == k->gp;
 }
 
-/* A part's objects built from their definitions, placed, and given their
- * states; its pending bodies noted.  The SGP hears heartbeats meanwhile. */
-static int take_part(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
+/* A part's objects built from their definitions and placed (their states
+ * follow); the SGP hears heartbeats meanwhile */
+static int build_part(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
 {
     int i;
     for (i = 0; i < m->nbodies; i++) {
@@ -85,45 +85,65 @@ static int take_part(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
             return snprintf(err, n, "bad object definition"), -1;
         if (vrTable_Put(&k->objects, m->defs[i].id, &d, m->defs[i].off, err, n) != 0) return -1;
     }
-    for (i = 0; i < m->nbodies; i++) {     /* placed: their states follow */
+    for (i = 0; i < m->nbodies; i++) {
         vrObject *o = vrTable_Get(&k->objects, m->defs[i].id);
         if (o && !o->built && vrObject_Ready(o, m->t, &k->params.flight, NULL, err, n) != 0) return -1;
     }
+    return 0;
+}
+
+/* a part's states onto its objects, and its pending bodies noted */
+static int place_part(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
+{
+    int i;
     k->scratch.n = 0;
-    if (vrWire_GetStates(m->states, m->nbodies, 1 << 30, &k->scratch) != 0) return snprintf(err, n, "bad body state"), -1;
-    for (i = 0; i < k->scratch.n; i++)
-        if (held(k, k->scratch.body[i].id))
-            vrBody_Apply(&vrTable_Get(&k->objects, k->scratch.body[i].id)->body, &k->scratch.body[i], &k->params.flight);
+    if (vrWire_GetStates(m->states, m->nbodies, 1 << 30, &k->scratch) != 0)
+        return snprintf(err, n, "bad body state"), -1;
+    for (i = 0; i < k->scratch.n; i++) {
+        const vrBodyState *st = &k->scratch.body[i];
+        if (held(k, st->id)) vrBody_Apply(&vrTable_Get(&k->objects, st->id)->body, st, &k->params.flight);
+    }
     for (i = 0; i < m->npending; i++) {
         if (!held(k, m->pending[i])) return snprintf(err, n, "bad pending body"), -1;
-        if (vrGrow((void **)&k->setup_pending, &k->setup_pending_cap, k->nsetup_pending + 1, sizeof *k->setup_pending) != 0)
+        if (vrGrow((void **)&k->setup_pending, &k->setup_pending_cap, k->nsetup_pending + 1,
+                   sizeof *k->setup_pending) != 0)
             return snprintf(err, n, "out of memory"), -1;
         k->setup_pending[k->nsetup_pending++] = m->pending[i];
     }
     return 0;
 }
 
-/* the owner over the objects of every part: the pairs whose boxes meet at
- * t, settled from the poses there, or flagged when a body of theirs is
- * pending (as the serial owner's, owners.c) */
-static int make_owner(vrWorker *k, double t, char *err, size_t n)
+/* every object built, held by a new lazy owner whose filter is the deal;
+ * told their states, as vrWorker_ApplyStates tells a held body's */
+static int hold_all(vrWorker *k)
 {
-    unsigned char *marks = calloc((size_t)k->objects.n + 1, 1);
-    int i, nid = 0, r;
-    if (!marks || !(k->owner = vrOwner_Create()) || vrGrow((void **)&k->ids, &k->idcap, k->objects.n + 1, sizeof *k->ids) != 0)
-        return free(marks), snprintf(err, n, "out of memory"), -1;
+    int i, nid = 0;
+    if (!(k->owner = vrOwner_Create())
+        || vrGrow((void **)&k->ids, &k->idcap, k->objects.n + 1, sizeof *k->ids) != 0) return -1;
     vrOwner_SetLazy(k->owner, 1);
     vrOwner_SetFilter(k->owner, mine, k);
     vrOwner_SetParams(k->owner, &k->params);
     vrOwner_SetProgress(k->owner, vrWorker_Beat, k);
     for (i = 0; i < k->objects.n; i++)
         if (held(k, i)) {
-            if (vrOwner_HoldBody(k->owner, i, &k->objects.obj[i]->body) != 0) return free(marks), snprintf(err, n, "out of memory"), -1;
+            if (vrOwner_HoldBody(k->owner, i, &k->objects.obj[i]->body) != 0) return -1;
             k->ids[nid++] = i;
         }
-    vrOwner_BodiesChanged(k->owner, k->ids, nid);   /* as vrWorker_ApplyStates tells a held body's state */
-    for (i = 0; i < k->nsetup_pending; i++) marks[k->setup_pending[i]] = 1;
-    r = vrOwner_MakePairsAt(k->owner, t, marks);
+    vrOwner_BodiesChanged(k->owner, k->ids, nid);
+    return 0;
+}
+
+/* after the last part: the pairs whose boxes meet at t, settled from the
+ * poses there, or flagged when a body of theirs is pending (as the
+ * serial owner's, owners.c) */
+static int make_owner(vrWorker *k, double t, char *err, size_t n)
+{
+    unsigned char *marks = calloc((size_t)k->objects.n + 1, 1);
+    int i, r = -1;
+    if (marks && hold_all(k) == 0) {
+        for (i = 0; i < k->nsetup_pending; i++) marks[k->setup_pending[i]] = 1;
+        r = vrOwner_MakePairsAt(k->owner, t, marks);
+    }
     free(marks);
     return r == 0 ? 0 : (snprintf(err, n, "out of memory"), -1);
 }
@@ -147,7 +167,7 @@ int vrWorker_SetUp(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
     if (m->part == 0 && start_setup(k, m, err, n) != 0) return k->setup_next = -1, -1;
     if (m->part != k->setup_next || m->part < 0 || m->part >= m->parts)
         return k->setup_next = -1, snprintf(err, n, "setup part out of order"), -1;
-    if (take_part(k, m, err, n) != 0) return k->setup_next = -1, -1;
+    if (build_part(k, m, err, n) != 0 || place_part(k, m, err, n) != 0) return k->setup_next = -1, -1;
     k->setup_next++;
     if (m->part + 1 < m->parts) return 0;
     r = make_owner(k, m->t, err, n);
