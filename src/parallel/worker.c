@@ -24,6 +24,27 @@
 
 /* ---- requests ---------------------------------------------------------------------------- */
 
+/* Its answer to its event, made with the look-ahead: when the event turns
+ * out to be the first of all, the SGP takes it from the earliest, and the
+ * event costs one round instead of an advance and its update as well.  A
+ * response reads only the bodies (vrEffect_Compute), which no clock move
+ * changes, so it is the answer an advance would get. */
+static void answer_ahead(vrWorker *k)
+{
+    vrOwnerStats before, after;
+    vrOwner_Stats(k->owner, &before);
+    k->answer.n = 0;
+    k->answered = vrOwner_Respond(k->owner, &k->first, &k->answer) == 0;
+    vrOwner_Stats(k->owner, &after);
+    k->answer_cost.solves = after.response.solves - before.response.solves;
+    k->answer_cost.refactors = after.response.refactors - before.response.refactors;
+    k->answer_cost.factors = after.response.factors - before.response.factors;
+    if (!k->answered) {          /* the advance finds it unanswerable too: silence */
+        k->answered = 1;
+        vrWorker_Settle(k, 0);
+    }
+}
+
 static void look_ahead(vrWorker *k, int64_t seq, const vroc_grid_t *grid, int allow)
 {
     vrGrid g;
@@ -34,7 +55,16 @@ static void look_ahead(vrWorker *k, int64_t seq, const vroc_grid_t *grid, int al
     }
     r = vrOwner_FirstEvent(k->owner, &g, allow, &k->first);
     k->has_first = r == 1;
+    if (k->has_first) answer_ahead(k);
     vrWorker_SendEarliest(k, seq, r == 1, &k->first, 0, NULL, NULL, r < 0 ? "out of memory" : NULL);
+}
+
+/* a new request: the answer sent with the last earliest was not taken
+ * unless it says so; its work starts now */
+static void start_request(vrWorker *k, int taken)
+{
+    vrWorker_Settle(k, taken);
+    k->busy_from = vrLink_NowMs();
 }
 
 static void check_overlaps(vrWorker *k, int64_t seq, double t, const int32_t *owed, int nowed)
@@ -73,6 +103,8 @@ static void take_setup(vrWorker *k, const vroc_setup_t *m)
         k->frames = 0;
     }
     if (vrWorker_Fresh(k, m->run, m->seq)) {
+        start_request(k, 0);
+        memset(&k->wasted, 0, sizeof k->wasted);   /* a new owner counts from 0 */
         k->gp = m->gp;
         if (vrWorker_SetUp(k, m, err, sizeof err) != 0 && !err[0]) strcpy(err, "setup failed");
         vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, err[0] ? err : NULL);
@@ -80,7 +112,8 @@ static void take_setup(vrWorker *k, const vroc_setup_t *m)
 }
 
 /* VROC_FAULT_KILL=gp:frame[:round] — the worker dies at that frame's
- * start, or at its round-th advance, in the middle of the frame (tests) */
+ * start, or at its round-th event (forward), in the middle of the frame
+ * (tests) */
 static void maybe_die(vrWorker *k)
 {
     if (k->gp != k->kill_gp || k->frames != k->kill_frame || k->rounds != k->kill_round) return;
@@ -91,6 +124,7 @@ static void maybe_die(vrWorker *k)
 static void take_frame(vrWorker *k, const vroc_frame_start_t *m)
 {
     if (!k->owner || !vrWorker_Fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
+    start_request(k, 0);
     if (!m->check) {
         k->frames++;
         k->rounds = 0;
@@ -103,24 +137,24 @@ static void take_frame(vrWorker *k, const vroc_frame_start_t *m)
     else look_ahead(k, m->seq, &m->grid, m->allow_instant);
 }
 
+/* the SGP asks for the answer to our event (it lacked the one our
+ * earliest carried) */
 static void take_advance(vrWorker *k, const vroc_advance_t *m)
 {
     vroc_update_t u;
     vrWireStates ws;
     vrResponseStats rs;
-    vrOwnerStats os;
     if (!k->owner || !vrWorker_Fresh(k, m->run, m->seq)) return;
-    k->rounds++;
-    maybe_die(k);
     if (k->silent || m->responder != k->gp) return;
     if (!k->has_first || k->first.order != m->order || k->first.t != m->t) return;
+    k->busy_from = vrLink_NowMs();
     vrOwner_Advance(k->owner, m->t);
-    k->scratch.n = 0;
-    if (vrOwner_Respond(k->owner, &k->first, &k->scratch) != 0) return;   /* silence: the SGP gives up on us */
+    if (!k->answered) answer_ahead(k);
+    if (!k->answered) return;            /* silence: the SGP gives up on us */
+    vrWorker_Settle(k, 1);
     memset(&u, 0, sizeof u);
     memset(&ws, 0, sizeof ws);
-    vrOwner_Stats(k->owner, &os);
-    rs = os.response;
+    rs = vrWorker_Counts(k);
     u.run = k->run;
     u.seq = m->seq;
     u.gp = k->gp;
@@ -128,17 +162,23 @@ static void take_advance(vrWorker *k, const vroc_advance_t *m)
     u.solves = rs.solves;
     u.refactors = rs.refactors;
     u.factors = rs.factors;
-    if (vrWire_PutStates(&ws, &k->scratch) == 0) {
+    u.taken = k->gp;
+    if (vrWire_PutStates(&ws, &k->answer) == 0) {
         u.nstates = ws.n;
         u.states = ws.m;
         if (VR_ENCODE(&k->reply, vroc_update_t, &u) == 0) vrWorker_Answer(k, VR_CH_UPDATE, m->seq);
     }
     vrWire_FreeStates(&ws);
+    vrWorker_NoteBusy(k);
 }
 
 static void take_forward(vrWorker *k, const vroc_update_t *m)
 {
     if (!k->owner || m->gp >= 0 || !vrWorker_Fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
+    start_request(k, m->taken == k->gp);
+    k->rounds++;
+    maybe_die(k);
+    if (k->silent) return;
     vrOwner_Advance(k->owner, m->t);
     if (vrWorker_ApplyStates(k, m->states, m->nstates) != 0) vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, "bad body state");
     else look_ahead(k, m->seq, &m->grid, m->allow_instant);
@@ -165,11 +205,13 @@ static void report_touches(vrWorker *k, const vroc_contacts_t *m)
     if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) vrWorker_Answer(k, VR_CH_CANDIDATES, m->seq);
     vrWire_FreeTouches(&r);
     vrTouches_Free(&list);
+    vrWorker_NoteBusy(k);
 }
 
 static void take_contacts(vrWorker *k, const vroc_contacts_t *m)
 {
     if (!k->owner || !vrWorker_Fresh(k, m->run, m->seq) || !isfinite(m->t) || !(m->h >= 0)) return;
+    start_request(k, 0);
     vrOwner_Advance(k->owner, m->t);
     if (vrWorker_ApplyStates(k, m->states, m->nstates) != 0) {
         vroc_candidates_t r;
@@ -218,6 +260,7 @@ vrWorker *vrWorker_Create(vrLink *link, long long nonce, int forked)
     k->gp = -1;
     k->last_seq = k->reply_seq = -1;
     vrUpdate_Init(&k->scratch);
+    vrUpdate_Init(&k->answer);
     parse_kill(k);
     k->subs[0] = lcm_subscribe(link->lcm, VR_CH_SETUP, on_setup, k);
     k->subs[1] = lcm_subscribe(link->lcm, VR_CH_FRAME, on_frame, k);
@@ -241,6 +284,7 @@ void vrWorker_Free(vrWorker *k)
     vrOwner_Free(k->owner);
     vrTable_Free(&k->objects);
     vrUpdate_Free(&k->scratch);
+    vrUpdate_Free(&k->answer);
     vrBuf_Free(&k->reply);
     free(k->ids);
     free(k);
