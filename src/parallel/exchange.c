@@ -90,6 +90,7 @@ static void take_earliest(vrSgp *s, const vroc_earliest_t *m)
     g->kind = m->kind;
     g->approach = m->approach;
     g->point = vec3_make(m->point[0], m->point[1], m->point[2]);
+    g->quiet = m->quiet && !m->found;
     g->now.checks = m->checks;
     g->now.heap_pops = m->heap_pops;
     g->now.solves = m->solves;
@@ -257,6 +258,7 @@ int vrSgp_Exchange(vrSgp *s, int waiting, int target)
     double start = vrLink_NowMs();
     int died;
     s->rounds[round_kind(s)]++;
+    s->quiet = 0;                        /* sgp.c sets it after a look-ahead */
     died = exchange(s, waiting, target);
     s->wait_ms += vrLink_NowMs() - start;
     return died;

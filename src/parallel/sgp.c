@@ -18,6 +18,7 @@
  *
  *   recover / snapshot   the frame start kept, and the frame redone from it
  *   encode_frame_start   the span's first request; encode_forward the others
+ *   put_owed             an island step answered without a round, told with the next request
  *   earliest_of_all      the first event of all, by (time, pair order)
  *   taken_answer         the responder's answer from its earliest
  *   sgp_*                the owner set's operations; sgp_end_frame also
@@ -54,6 +55,7 @@ static int recover(vrWorld *w, char *err, size_t n)
     }
     w->pending.n = 0;
     s->taken = -1;
+    s->owed_h = 0;
     if (vrSgp_AppendStates(&w->pending, &s->snap_pending) != 0) return snprintf(err, n, "out of memory"), -1;
     s->snap_pending.n = 0;
     if (vrSgp_Setup(w, s, err, n) != 0) return -1;
@@ -71,6 +73,14 @@ static void snapshot(vrWorld *w, vrSgp *s)
     s->snap_island_contacts = w->island_contacts;
     s->snap_clamps = w->clamps;
     for (i = 0; i < s->n; i++) s->snap_counts[i] = vrSgp_Counts(s, i);
+}
+
+/* the island step answered without a round goes with the next request */
+static void put_owed(vrSgp *s, double *t, double *h)
+{
+    *t = s->owed_t;
+    *h = s->owed_h;
+    s->owed_h = 0;
 }
 
 /* check: ids[0..nids) are the bodies whose overlaps are asked for */
@@ -92,6 +102,7 @@ static int encode_frame_start(vrWorld *w, vrSgp *s, const vrGrid *g, int allow, 
     m.states = ws.m;
     if (check && nids > 0 && !(m.owed = malloc((size_t)nids * sizeof *m.owed))) r = -1;
     for (m.nowed = 0; m.owed && m.nowed < nids; m.nowed++) m.owed[m.nowed] = ids[m.nowed];
+    put_owed(s, &m.island_t, &m.island_h);
     if (r == 0) r = VR_ENCODE(&s->req, vroc_frame_start_t, &m);
     free(m.owed);
     vrWire_FreeStates(&ws);
@@ -117,6 +128,7 @@ static int encode_forward(vrWorld *w, vrSgp *s, const vrGrid *g, int allow)
     vrWire_PutGrid(&m.grid, g);
     m.allow_instant = (int8_t)allow;
     m.taken = s->taken;
+    put_owed(s, &m.island_t, &m.island_h);
     if (r == 0) r = VR_ENCODE(&s->req, vroc_update_t, &m);
     vrWire_FreeStates(&ws);
     s->req_channel = VR_CH_FORWARD;
@@ -146,6 +158,18 @@ static int earliest_of_all(vrSgp *s, vrEvent *ev)
     return 1;
 }
 
+/* every worker's look-ahead found nothing, and an island step at its end
+ * would find nothing either */
+static int all_quiet(const vrSgp *s)
+{
+    int i, k = 0;
+    for (i = 0; i < s->n; i++) {
+        if (s->gp[i].alive && !s->gp[i].quiet) return 0;
+        k += s->gp[i].alive;
+    }
+    return k > 0;
+}
+
 static int sgp_first_event(vrWorld *w, const vrGrid *g, int allow, vrEvent *ev, char *err, size_t n)
 {
     vrSgp *s = w->sgp;
@@ -169,6 +193,8 @@ static int sgp_first_event(vrWorld *w, const vrGrid *g, int allow, vrEvent *ev, 
     if (r != 0) return snprintf(err, n, "out of memory"), -1;
     if (vrSgp_Exchange(s, WAIT_EARLIEST, -1)) return recover(w, err, n);
     if (s->error[0]) return snprintf(err, n, "%s", s->error), -1;
+    s->quiet = all_quiet(s);
+    s->quiet_t = g->T;
     return earliest_of_all(s, ev);
 }
 
@@ -254,8 +280,12 @@ static int sgp_overlapping(vrWorld *w, double tol, const int *ids, int nids, int
     return s->noverlap;
 }
 
-/* an island step: ask every worker for the pairs that touch (a round at
- * each island step; the states they need went with the last round) */
+/* An island step: ask every worker for the pairs that touch (a round at
+ * each island step; the states they need went with the last round).  When
+ * the last round was the look-ahead that ended here, every worker said
+ * an island step would find nothing of its (quiet) and no state changed
+ * since, the answer is known: none, and the workers do the step with the
+ * next request (owed). */
 static int sgp_touching(vrWorld *w, double t, double h, vrTouches *out, char *err, size_t n)
 {
     vrSgp *s = w->sgp;
@@ -266,6 +296,12 @@ static int sgp_touching(vrWorld *w, double t, double h, vrTouches *out, char *er
         snapshot(w, s);
         s->frame_open = s->frame_fresh = 1;
     }
+    if (h > 0 && s->quiet && s->quiet_t == t && w->pending.n == 0 && !(s->owed_h > 0)) {
+        s->owed_t = t;
+        s->owed_h = h;
+        s->quiet = 0;
+        return 0;
+    }
     memset(&m, 0, sizeof m);
     memset(&ws, 0, sizeof ws);
     r = vrWire_PutStates(&ws, &w->pending);
@@ -275,6 +311,7 @@ static int sgp_touching(vrWorld *w, double t, double h, vrTouches *out, char *er
     m.h = h;
     m.nstates = ws.n;
     m.states = ws.m;
+    put_owed(s, &m.island_t, &m.island_h);
     s->error[0] = 0;
     s->touches.n = 0;
     if (r == 0) r = VR_ENCODE(&s->req, vroc_contacts_t, &m);

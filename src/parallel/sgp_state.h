@@ -41,6 +41,7 @@ typedef struct vrGpInfo {
     int answered;
     vrGpCounts answer_cost;     /* the KLU counts that answer adds to now's */
     double busy_ms;             /* its time on requests, as it last said */
+    int quiet;                  /* its last look-ahead found nothing, nor would an island step */
     vrGpCounts now;             /* of its owner, as it last said */
     vrGpCounts before;          /* of the owners it had before: a setup makes a new one */
     int copies, pairs;
@@ -57,6 +58,9 @@ struct vrSgp {
     long structure;             /* the world's, at the last setup */
     int waiting, responder, setup_round, max_id;
     int taken;                  /* the worker whose answer the next forward carries, or -1 */
+    int quiet;                  /* the last round was a look-ahead to quiet_t and every worker was quiet */
+    double quiet_t;
+    double owed_t, owed_h;      /* an island step answered without a round (owed_h > 0), for the next request */
     vrBuf req;                  /* the broadcast request awaiting answers */
     const char *req_channel;
     vrUpdate reply;             /* the responder's states */

@@ -55,7 +55,8 @@ static void look_ahead(vrWorker *k, int64_t seq, const vroc_grid_t *grid, int al
     }
     r = vrOwner_FirstEvent(k->owner, &g, allow, &k->first);
     k->has_first = r == 1;
-    if (k->has_first) answer_ahead(k);
+    k->quiet = r == 0 && vrOwner_Quiet(k->owner);
+    if (k->has_first && k->answer_ahead) answer_ahead(k);
     vrWorker_SendEarliest(k, seq, r == 1, &k->first, 0, NULL, NULL, r < 0 ? "out of memory" : NULL);
 }
 
@@ -64,7 +65,26 @@ static void look_ahead(vrWorker *k, int64_t seq, const vroc_grid_t *grid, int al
 static void start_request(vrWorker *k, int taken)
 {
     vrWorker_Settle(k, taken);
+    k->quiet = 0;
     k->busy_from = vrLink_NowMs();
+}
+
+/* The island step the SGP answered without a round because every worker
+ * said it would find nothing (quiet): done now, where the contacts
+ * request would have done it (every clock at t, no state since), so that
+ * what it records (the step's time and length) is the same.  NULL, or
+ * what went wrong. */
+static const char *owed_island(vrWorker *k, double t, double h)
+{
+    vrTouches list = {0, 0, NULL};
+    int r, found;
+    if (!(h > 0)) return NULL;
+    if (!isfinite(t) || !isfinite(h)) return "bad island step";
+    vrOwner_Advance(k->owner, t);
+    r = vrOwner_Touching(k->owner, t, h, &list);
+    found = list.n;
+    vrTouches_Free(&list);
+    return r != 0 ? "out of memory" : found ? "an island step answered without a round had contacts" : NULL;
 }
 
 static void check_overlaps(vrWorker *k, int64_t seq, double t, const int32_t *owed, int nowed)
@@ -123,6 +143,7 @@ static void maybe_die(vrWorker *k)
 
 static void take_frame(vrWorker *k, const vroc_frame_start_t *m)
 {
+    const char *bad;
     if (!k->owner || !vrWorker_Fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
     start_request(k, 0);
     if (!m->check) {
@@ -131,6 +152,10 @@ static void take_frame(vrWorker *k, const vroc_frame_start_t *m)
         maybe_die(k);
     }
     if (k->silent) return;
+    if ((bad = owed_island(k, m->island_t, m->island_h)) != NULL) {
+        vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, bad);
+        return;
+    }
     vrOwner_Advance(k->owner, m->t);
     if (vrWorker_ApplyStates(k, m->states, m->nstates) != 0) vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, "bad body state");
     else if (m->check) check_overlaps(k, m->seq, m->t, m->owed, m->nowed);
@@ -174,11 +199,16 @@ static void take_advance(vrWorker *k, const vroc_advance_t *m)
 
 static void take_forward(vrWorker *k, const vroc_update_t *m)
 {
+    const char *bad;
     if (!k->owner || m->gp >= 0 || !vrWorker_Fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
     start_request(k, m->taken == k->gp);
     k->rounds++;
     maybe_die(k);
     if (k->silent) return;
+    if ((bad = owed_island(k, m->island_t, m->island_h)) != NULL) {
+        vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, bad);
+        return;
+    }
     vrOwner_Advance(k->owner, m->t);
     if (vrWorker_ApplyStates(k, m->states, m->nstates) != 0) vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, "bad body state");
     else look_ahead(k, m->seq, &m->grid, m->allow_instant);
@@ -208,16 +238,27 @@ static void report_touches(vrWorker *k, const vroc_contacts_t *m)
     vrWorker_NoteBusy(k);
 }
 
+/* an island step's answer that names what went wrong */
+static void touches_failed(vrWorker *k, int64_t seq, const char *why)
+{
+    vroc_candidates_t r;
+    memset(&r, 0, sizeof r);
+    r.run = k->run, r.seq = seq, r.gp = k->gp, r.error = (char *)why;
+    if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) vrWorker_Answer(k, VR_CH_CANDIDATES, seq);
+}
+
 static void take_contacts(vrWorker *k, const vroc_contacts_t *m)
 {
+    const char *bad;
     if (!k->owner || !vrWorker_Fresh(k, m->run, m->seq) || !isfinite(m->t) || !(m->h >= 0)) return;
     start_request(k, 0);
+    if ((bad = owed_island(k, m->island_t, m->island_h)) != NULL) {
+        touches_failed(k, m->seq, bad);
+        return;
+    }
     vrOwner_Advance(k->owner, m->t);
     if (vrWorker_ApplyStates(k, m->states, m->nstates) != 0) {
-        vroc_candidates_t r;
-        memset(&r, 0, sizeof r);
-        r.run = k->run, r.seq = m->seq, r.gp = k->gp, r.error = "bad body state";
-        if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) vrWorker_Answer(k, VR_CH_CANDIDATES, m->seq);
+        touches_failed(k, m->seq, "bad body state");
         return;
     }
     report_touches(k, m);
@@ -239,6 +280,14 @@ VR_HANDLER(on_contacts, vroc_contacts_t, vrWorker, take_contacts, ignore)
 VR_HANDLER(on_shutdown, vroc_shutdown_t, vrWorker, take_shutdown, ignore)
 
 /* ---- life ----------------------------------------------------------------------------------- */
+
+/* VROC_ANSWER_AHEAD=0: no answer with the earliest, an advance round per
+ * event as the thesis had it (the bench's and tests' comparison) */
+static void parse_knobs(vrWorker *k)
+{
+    const char *a = getenv("VROC_ANSWER_AHEAD");
+    k->answer_ahead = !(a && strcmp(a, "0") == 0);
+}
 
 static void parse_kill(vrWorker *k)
 {
@@ -262,6 +311,7 @@ vrWorker *vrWorker_Create(vrLink *link, long long nonce, int forked)
     vrUpdate_Init(&k->scratch);
     vrUpdate_Init(&k->answer);
     parse_kill(k);
+    parse_knobs(k);
     k->subs[0] = lcm_subscribe(link->lcm, VR_CH_SETUP, on_setup, k);
     k->subs[1] = lcm_subscribe(link->lcm, VR_CH_FRAME, on_frame, k);
     k->subs[2] = lcm_subscribe(link->lcm, VR_CH_ADVANCE, on_advance, k);

@@ -108,6 +108,7 @@ void vrWorker_SendEarliest(vrWorker *k, int64_t seq, int found, const vrEvent *e
     m.factors = rs.factors;
     vrWorker_NoteBusy(k);
     m.busy_ms = k->busy_ms;
+    m.quiet = (int8_t)k->quiet;
     m.checks = os.checks;
     m.heap_pops = os.heap_pops;
     m.copies = k->owner ? vrOwner_BodyCount(k->owner) : 0;
