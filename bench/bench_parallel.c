@@ -277,17 +277,17 @@ static int by_room_fps(const void *x, const void *y)
     return a < b ? -1 : a > b;
 }
 
-/* ahead = 0: "2a", the advance round per event */
+/* ahead = 0: "2t", the thesis's rounds */
 static void print_room(int n, int gps, int ahead, const Room *m, double serial_fps)
 {
     double f = m->frames > 0 ? m->frames : 1, rounds = 0;
     int i;
     for (i = 0; i < 5; i++) rounds += m->rounds[i];
-    printf("%6d %4d%s %9.1f %6.2f %8.1f %6.1f %6.1f %6.1f %6.1f %8.1f %8.2f %8.2f %8.2f\n", n, gps, ahead ? " " : "a", room_fps(m),
+    printf("%6d %4d%s %9.1f %6.2f %8.1f %6.1f %6.1f %6.1f %6.1f %8.1f %8.2f %8.2f %8.2f\n", n, gps, ahead ? " " : "t", room_fps(m),
            serial_fps > 0 ? room_fps(m) / serial_fps : 0, rounds / f, m->rounds[0] / f, m->rounds[1] / f,
            m->rounds[2] / f, m->rounds[3] / f, (double)m->messages / f, m->sim_ms / f, m->wait_ms / f,
            m->busy_ms / f);
-    printf("csv,rooms,%d,%d%s,%.2f,%.3f,%.2f,%.2f,%.2f,%.2f,%.2f,%.1f,%.3f,%.3f,%.3f,%.2f\n", n, gps, ahead ? "" : "a", room_fps(m),
+    printf("csv,rooms,%d,%d%s,%.2f,%.3f,%.2f,%.2f,%.2f,%.2f,%.2f,%.1f,%.3f,%.3f,%.3f,%.2f\n", n, gps, ahead ? "" : "t", room_fps(m),
            serial_fps > 0 ? room_fps(m) / serial_fps : 0, rounds / f, m->rounds[0] / f, m->rounds[1] / f,
            m->rounds[2] / f, m->rounds[3] / f, (double)m->messages / f, m->sim_ms / f, m->wait_ms / f,
            m->busy_ms / f, (double)m->collisions / f);
@@ -295,9 +295,9 @@ static void print_room(int n, int gps, int ahead, const Room *m, double serial_f
 
 #define ROOM_RUNS_MAX 15
 
-/* serial, gps = 1 and 2, and gps = 2 with the thesis's advance round per
- * event (VROC_ANSWER_AHEAD=0), interleaved (the machine's load shifts),
- * medians */
+/* serial, gps = 1 and 2, and gps = 2 with the thesis's rounds (an advance
+ * per event, a round at every island step: VROC_THESIS_ROUNDS=1),
+ * interleaved (the machine's load shifts), medians */
 static void rooms_table(int n, long frames, int runs)
 {
     static const int gps[] = {0, 1, 2, 2}, ahead[] = {1, 1, 1, 0};
@@ -306,16 +306,16 @@ static void rooms_table(int n, long frames, int runs)
     if (runs > ROOM_RUNS_MAX) runs = ROOM_RUNS_MAX;
     for (i = 0; i < runs; i++)
         for (g = 0; g < 4; g++) {
-            if (ahead[g]) unsetenv("VROC_ANSWER_AHEAD");
-            else setenv("VROC_ANSWER_AHEAD", "0", 1);
+            if (ahead[g]) unsetenv("VROC_THESIS_ROUNDS");
+            else setenv("VROC_THESIS_ROUNDS", "1", 1);
             r[g][i] = room_in_child(n, gps[g], frames);
         }
-    unsetenv("VROC_ANSWER_AHEAD");
+    unsetenv("VROC_THESIS_ROUNDS");
     for (g = 0; g < 4; g++) qsort(r[g], (size_t)runs, sizeof r[g][0], by_room_fps);
     for (g = 0; g < 4; g++) {
         const Room *m = &r[g][runs / 2];
         if (!m->ok) {
-            printf("%6d %4d%s  (failed)\n", n, gps[g], ahead[g] ? " " : "a");
+            printf("%6d %4d%s  (failed)\n", n, gps[g], ahead[g] ? " " : "t");
             continue;
         }
         print_room(n, gps[g], ahead[g], m, room_fps(&r[0][runs / 2]));
@@ -326,7 +326,7 @@ static void rooms_header(long frames, int runs)
 {
     printf("\nSPEC 10 rooms over udpm, no gravity, %ld frames of 0.05 s after one, median of %d interleaved runs\n"
            "rounds a frame: all, frame starts, events, advances, island steps; ms a frame: the frame, the SGP's\n"
-           "waits, the workers' work (summed)\n", frames, runs);
+           "waits, the workers' work (summed); 2t: gps = 2 with the thesis's rounds (VROC_THESIS_ROUNDS=1)\n", frames, runs);
     printf("%6s %4s %9s %6s %8s %6s %6s %6s %6s %8s %8s %8s %8s\n", "objs", "gps", "frames/s", "vs 0", "rounds",
            "start", "event", "adv", "island", "msgs", "ms", "wait", "busy");
 }

@@ -55,8 +55,8 @@ static void look_ahead(vrWorker *k, int64_t seq, const vroc_grid_t *grid, int al
     }
     r = vrOwner_FirstEvent(k->owner, &g, allow, &k->first);
     k->has_first = r == 1;
-    k->quiet = r == 0 && vrOwner_Quiet(k->owner);
-    if (k->has_first && k->answer_ahead) answer_ahead(k);
+    k->quiet = r == 0 && !k->thesis_rounds && vrOwner_Quiet(k->owner);
+    if (k->has_first && !k->thesis_rounds) answer_ahead(k);
     vrWorker_SendEarliest(k, seq, r == 1, &k->first, 0, NULL, NULL, r < 0 ? "out of memory" : NULL);
 }
 
@@ -281,12 +281,13 @@ VR_HANDLER(on_shutdown, vroc_shutdown_t, vrWorker, take_shutdown, ignore)
 
 /* ---- life ----------------------------------------------------------------------------------- */
 
-/* VROC_ANSWER_AHEAD=0: no answer with the earliest, an advance round per
- * event as the thesis had it (the bench's and tests' comparison) */
+/* VROC_THESIS_ROUNDS=1: the thesis's rounds, for the bench's and the
+ * tests' comparison: no answer with the earliest (an advance round per
+ * event) and never quiet (a round at every island step) */
 static void parse_knobs(vrWorker *k)
 {
-    const char *a = getenv("VROC_ANSWER_AHEAD");
-    k->answer_ahead = !(a && strcmp(a, "0") == 0);
+    const char *a = getenv("VROC_THESIS_ROUNDS");
+    k->thesis_rounds = a && strcmp(a, "1") == 0;
 }
 
 static void parse_kill(vrWorker *k)

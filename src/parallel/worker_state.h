@@ -28,7 +28,8 @@ struct vrWorker {
     int has_first;
     vrUpdate scratch;
     vrUpdate answer;              /* its answer to `first`, sent with it (answered) */
-    int answered, answer_ahead;   /* answer_ahead: VROC_ANSWER_AHEAD is not 0 */
+    int answered;
+    int thesis_rounds;            /* VROC_THESIS_ROUNDS=1 */
     int quiet;                    /* the last look-ahead found nothing, nor would an island step (vrOwner_Quiet) */
     vrResponseStats answer_cost;  /* the KLU counts that answer added */
     vrResponseStats wasted;       /* those of answers not taken: not in its statistics */
