@@ -6,9 +6,10 @@
  * exited, is declared dead.
  *
  *   sender                 the worker an answer is from, if it is awaited
+ *   take_answer            the answer to its event an earliest carries
  *   take_*                 an answer of each kind (the VR_HANDLER callbacks)
  *   resend / send_request  the request to every worker, or a setup each
- *   exited                 a forked worker that is gone
+ *   round_kind, exited     a round's kind (stats rounds); a forked worker that is gone
  */
 #include <string.h>
 #include <sys/wait.h>

@@ -3,7 +3,10 @@
  * one vrOwner over its pairs) is worker_hold.c's; its answers and
  * heartbeats, worker_reply.c's; its state, worker_state.h.
  *
+ *   answer_ahead   the answer to its own event, sent with it (one round an event)
  *   look_ahead, check_overlaps   a span's first event; the overlaps of a check
+ *   start_request  a new request: the last answer's fate, the busy clock
+ *   owed_island    an island step the SGP answered without a round, done late
  *   maybe_die      VROC_FAULT_KILL, for the tests of a dying worker
  *   take_*         a request of each kind (the VR_HANDLER callbacks)
  */
