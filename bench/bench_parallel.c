@@ -4,6 +4,13 @@
  * (through ./vroc) and random 20..100; and the LCM round trip between two
  * processes.  Runs in a private network namespace (tests/netns.h).
  *
+ * SPEC 10's heavy frames (issue 26): `rooms` — N objects in a room of
+ * SPEC 10's density without gravity, serial, gps = 1 and 2 interleaved
+ * over udpm, each run in a fresh child, the median of RUNS: frames/s,
+ * rounds a frame by kind, messages a frame, the SGP's waiting and the
+ * workers' busy time a frame.  `bench_parallel rooms [N [FRAMES [RUNS]]]`
+ * runs that table alone.
+ *
  * This machine has 2 cores: more workers than cores only adds messages.
  * The figures say how the protocol costs, not how Pixel-Planes 5 scaled. */
 #define _DEFAULT_SOURCE
@@ -13,11 +20,12 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
+#include <math.h>
 #include <lcm/lcm.h>
 #include "vroc.h"
 #include "../tests/netns.h"
 
-#define UDPM "udpm://239.255.76.67:7667?ttl=0"
+#define UDPM "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 static const int workers[] = {0, 1, 2, 4, 8};
 #define NW 5
 
@@ -192,6 +200,137 @@ static void round_trip(void)
     waitpid(pid, &status, 0);
 }
 
+/* ---- SPEC 10's heavy frames --------------------------------------------------------- */
+
+typedef struct Room {
+    int ok;
+    double frames, sim_ms, wait_ms, busy_ms, rounds[5];
+    long long messages, collisions;
+} Room;
+
+/* in this (child) process: the room built and started (the workers set
+ * up), one frame to warm, then frames frames counted */
+static Room room_run(int n, int gps, long frames)
+{
+    vrWorld *w = vrWorld_Create();
+    vrSettings s = *vrWorld_Settings(w);
+    vrStats a, b;
+    Room r;
+    char err[256] = "";
+    int i;
+    memset(&r, 0, sizeof r);
+    s.room = 22.1 * cbrt(n / 500.0);   /* SPEC 10's density: 10,000 in 60 m */
+    s.seed = 1993;
+    s.collision_dist = 0.01;
+    s.time_step = 0.05;
+    s.max_linear = 1000;
+    s.max_angular = 10000;
+    s.gps = gps;
+    snprintf(s.lcm_url, sizeof s.lcm_url, "%s", UDPM);
+    if (vrWorld_SetSettings(w, &s, err, sizeof err) != 0 || vrWorld_AddRandom(w, n, err, sizeof err) != 0
+        || vrWorld_Step(w, 1, err, sizeof err) != 0) {
+        fprintf(stderr, "bench_parallel: room of %d, gps %d: %s\n", n, gps, err);
+        vrWorld_Destroy(w);
+        return r;
+    }
+    vrWorld_GetStats(w, &a);
+    r.ok = vrWorld_Step(w, frames, err, sizeof err) == 0;
+    if (!r.ok) fprintf(stderr, "bench_parallel: room of %d, gps %d: %s\n", n, gps, err);
+    vrWorld_GetStats(w, &b);
+    r.frames = (double)(b.frames - a.frames);
+    r.sim_ms = b.sim_ms - a.sim_ms;
+    r.wait_ms = b.wait_ms - a.wait_ms;
+    r.busy_ms = b.gp_busy_ms - a.gp_busy_ms;
+    for (i = 0; i < 5; i++) r.rounds[i] = (double)(b.rounds[i] - a.rounds[i]);
+    r.messages = b.messages - a.messages;
+    r.collisions = b.collisions - a.collisions;
+    vrWorld_Destroy(w);
+    return r;
+}
+
+static Room room_in_child(int n, int gps, long frames)
+{
+    Room r;
+    int fd[2];
+    pid_t pid;
+    memset(&r, 0, sizeof r);
+    fflush(stdout);
+    if (pipe(fd) != 0) return r;
+    if ((pid = fork()) == 0) {
+        Room c = room_run(n, gps, frames);
+        close(fd[0]);
+        if (write(fd[1], &c, sizeof c) != (ssize_t)sizeof c) _exit(2);
+        _exit(0);
+    }
+    close(fd[1]);
+    if (pid < 0 || read(fd[0], &r, sizeof r) != (ssize_t)sizeof r) memset(&r, 0, sizeof r);
+    close(fd[0]);
+    if (pid > 0) waitpid(pid, NULL, 0);
+    return r;
+}
+
+static double room_fps(const Room *r) { return r->sim_ms > 0 ? 1000.0 * r->frames / r->sim_ms : 0; }
+
+static int by_room_fps(const void *x, const void *y)
+{
+    double a = room_fps(x), b = room_fps(y);
+    return a < b ? -1 : a > b;
+}
+
+/* ahead = 0: "2t", the thesis's rounds */
+static void print_room(int n, int gps, int ahead, const Room *m, double serial_fps)
+{
+    double f = m->frames > 0 ? m->frames : 1, rounds = 0;
+    int i;
+    for (i = 0; i < 5; i++) rounds += m->rounds[i];
+    printf("%6d %4d%s %9.1f %6.2f %8.1f %6.1f %6.1f %6.1f %6.1f %8.1f %8.2f %8.2f %8.2f\n", n, gps, ahead ? " " : "t", room_fps(m),
+           serial_fps > 0 ? room_fps(m) / serial_fps : 0, rounds / f, m->rounds[0] / f, m->rounds[1] / f,
+           m->rounds[2] / f, m->rounds[3] / f, (double)m->messages / f, m->sim_ms / f, m->wait_ms / f,
+           m->busy_ms / f);
+    printf("csv,rooms,%d,%d%s,%.2f,%.3f,%.2f,%.2f,%.2f,%.2f,%.2f,%.1f,%.3f,%.3f,%.3f,%.2f\n", n, gps, ahead ? "" : "t", room_fps(m),
+           serial_fps > 0 ? room_fps(m) / serial_fps : 0, rounds / f, m->rounds[0] / f, m->rounds[1] / f,
+           m->rounds[2] / f, m->rounds[3] / f, (double)m->messages / f, m->sim_ms / f, m->wait_ms / f,
+           m->busy_ms / f, (double)m->collisions / f);
+}
+
+#define ROOM_RUNS_MAX 15
+
+/* serial, gps = 1 and 2, and gps = 2 with the thesis's rounds (an advance
+ * per event, a round at every island step: VROC_THESIS_ROUNDS=1),
+ * interleaved (the machine's load shifts), medians */
+static void rooms_table(int n, long frames, int runs)
+{
+    static const int gps[] = {0, 1, 2, 2}, ahead[] = {1, 1, 1, 0};
+    Room r[4][ROOM_RUNS_MAX];
+    int i, g;
+    if (runs > ROOM_RUNS_MAX) runs = ROOM_RUNS_MAX;
+    for (i = 0; i < runs; i++)
+        for (g = 0; g < 4; g++) {
+            if (ahead[g]) unsetenv("VROC_THESIS_ROUNDS");
+            else setenv("VROC_THESIS_ROUNDS", "1", 1);
+            r[g][i] = room_in_child(n, gps[g], frames);
+        }
+    unsetenv("VROC_THESIS_ROUNDS");
+    for (g = 0; g < 4; g++) qsort(r[g], (size_t)runs, sizeof r[g][0], by_room_fps);
+    for (g = 0; g < 4; g++) {
+        const Room *m = &r[g][runs / 2];
+        if (!m->ok) {
+            printf("%6d %4d%s  (failed)\n", n, gps[g], ahead[g] ? " " : "t");
+            continue;
+        }
+        print_room(n, gps[g], ahead[g], m, room_fps(&r[0][runs / 2]));
+    }
+}
+
+static void rooms_header(long frames, int runs)
+{
+    printf("\nSPEC 10 rooms over udpm, no gravity, %ld frames of 0.05 s after one, median of %d interleaved runs\n"
+           "rounds a frame: all, frame starts, events, advances, island steps; ms a frame: the frame, the SGP's\n"
+           "waits, the workers' work (summed); 2t: gps = 2 with the thesis's rounds (VROC_THESIS_ROUNDS=1)\n", frames, runs);
+    printf("%6s %4s %9s %6s %8s %6s %6s %6s %6s %8s %8s %8s %8s\n", "objs", "gps", "frames/s", "vs 0", "rounds",
+           "start", "event", "adv", "island", "msgs", "ms", "wait", "busy");
+}
+
 int main(int argc, char **argv)
 {
     static const char *const scenes[] = {"simple", "desks", "basketball", "office", "bounce"};
@@ -200,6 +339,13 @@ int main(int argc, char **argv)
     int i, g, n;
     enter_namespace(argc, argv);
     setvbuf(stdout, NULL, _IOLBF, 0);
+    if (argc > 1 && strcmp(argv[1], "rooms") == 0) {
+        long frames = argc > 3 ? atol(argv[3]) : 20;
+        int runs = argc > 4 ? atoi(argv[4]) : 5;
+        rooms_header(frames, runs);
+        rooms_table(argc > 2 ? atoi(argv[2]) : 1000, frames, runs);
+        return 0;
+    }
     snprintf(vroc, sizeof vroc, "%s/vroc", build);
     round_trip();
     printf("\nworkers over udpm on %ld cores (0 = serial); fps from sim_ms; objects and pairs per worker (min-max)\n",
@@ -220,5 +366,7 @@ int main(int argc, char **argv)
         snprintf(name, sizeof name, "random %d (%d pairs)", n, n * (n - 1) / 2);
         for (g = 0; g < NW; g++) print_row(name, workers[g], random_run(n, workers[g], 60));
     }
+    rooms_header(20, 5);
+    for (n = 500; n <= 1000; n += 500) rooms_table(n, 20, 5);
     return 0;
 }

@@ -193,6 +193,13 @@ typedef struct vrStats {
     long long gp_pairs[64];       /* pairs per worker */
     long long foreign, malformed; /* messages ignored: other runs', undecodable */
     long long live_pairs;         /* pairs with a record now: those whose bodies' boxes meet (SPEC 10) */
+    /* with workers (not in the stats line): the SGP's rounds, a request
+     * and every answer to it, by kind: frame starts (and start checks),
+     * events, advances, island steps, setups; the SGP's time in rounds
+     * (waiting, and in-process workers' work); the workers' time on
+     * requests, summed */
+    long long rounds[5];
+    double wait_ms, gp_busy_ms;
 } vrStats;
 void vrWorld_GetStats(const vrWorld *w, vrStats *st);
 /* the renderer reports its time here so that `stats` can show render_ms */

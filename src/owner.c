@@ -401,3 +401,16 @@ void vrOwner_Stats(const vrOwner *o, vrOwnerStats *s)
     s->heap_pops = o->heap_pops;
     s->response = vrResponder_Stats(o->responder);
 }
+
+/* An island step would find nothing here: no pair in the envelope (those
+ * are the only ones that can touch), none flagged for a look, no body
+ * whose pairs are still to be made — vrOwner_Touching looks at no pair. */
+int vrOwner_Quiet(const vrOwner *o)
+{
+    int i;
+    if (o->any_fresh || o->flagged.n > 0) return 0;
+    if (o->p.use_heap) return o->active.n == 0;
+    for (i = 0; i < o->npair; i++)
+        if (!vrPair_Free(&o->pair[i]) && o->pair[i].inside && o->pair[i].scheduled) return 0;
+    return 1;
+}

@@ -108,6 +108,9 @@ void vrOwner_Stats(const vrOwner *o, vrOwnerStats *s);
  * touching pair that does not leave, and nothing marked.  Every clock must
  * be at t.  -1 on no memory. */
 int vrOwner_Touching(vrOwner *o, double t, double h, vrTouches *out);
+/* 1 when an island step (vrOwner_Touching, h > 0) would find no pair
+ * here: none in the envelope, none flagged, none still to be made */
+int vrOwner_Quiet(const vrOwner *o);
 /* fn(ctx) is called every few hundred pair evaluations during a look-ahead
  * (a worker sends heartbeats from it while it cannot answer) */
 void vrOwner_SetProgress(vrOwner *o, void (*fn)(void *ctx), void *ctx);

@@ -524,6 +524,40 @@ static int test_messages_do_not_grow_with_objects(void)
     return 0;
 }
 
+/* Issue 26: an event costs one round (the worker's answer to its event
+ * comes with its look-ahead), an island step every worker says finds
+ * nothing costs none; the thesis's rounds (VROC_THESIS_ROUNDS=1: an
+ * advance per event, every island step asked) give the same bits, the
+ * same counts, and more rounds.  (klu_factors is each worker's first
+ * factorisation of each pattern: it follows the workers, not the run.) */
+enum { ROUNDS_START, ROUNDS_EVENT, ROUNDS_ADVANCE, ROUNDS_ISLAND };
+
+static int test_fewer_rounds_change_no_bit(void)
+{
+    vrRun thesis, fewer;
+    const char *url[] = {"memq://", UDPM};
+    int u;
+    for (u = 0; u < 2; u++) {
+        setenv("VROC_THESIS_ROUNDS", "1", 1);
+        thesis = run(random_60, 2, url[u], VR_DIST_IMPROVED, 200);
+        unsetenv("VROC_THESIS_ROUNDS");
+        fewer = run(random_60, 2, url[u], VR_DIST_IMPROVED, 200);
+        if (same_as_serial(thesis, "thesis rounds") || same_as_serial(fewer, "fewer rounds")) return 1;
+        printf("    %s: rounds (starts, events, advances, island steps) thesis %lld %lld %lld %lld, now %lld %lld %lld %lld; "
+               "messages %lld, now %lld\n", url[u], thesis.stats.rounds[0], thesis.stats.rounds[1], thesis.stats.rounds[2],
+               thesis.stats.rounds[3], fewer.stats.rounds[0], fewer.stats.rounds[1], fewer.stats.rounds[2],
+               fewer.stats.rounds[3], thesis.stats.messages, fewer.stats.messages);
+        ENSURE(thesis.stats.rounds[ROUNDS_ADVANCE] >= serial_60.stats.collisions && serial_60.stats.collisions > 0);
+        ENSURE(fewer.stats.rounds[ROUNDS_ADVANCE] == 0);
+        ENSURE(fewer.stats.rounds[ROUNDS_EVENT] == thesis.stats.rounds[ROUNDS_EVENT]);
+        ENSURE(fewer.stats.rounds[ROUNDS_ISLAND] < thesis.stats.rounds[ROUNDS_ISLAND]);
+        ENSURE(fewer.stats.messages < thesis.stats.messages);
+        ENSURE(fewer.stats.klu_solves == serial_60.stats.klu_solves && thesis.stats.klu_solves == serial_60.stats.klu_solves);
+        ENSURE(fewer.stats.checks == thesis.stats.checks && fewer.stats.heap_pops == thesis.stats.heap_pops);
+    }
+    return 0;
+}
+
 /* the serial run every other is compared with */
 static int run_serial(void)
 {
@@ -550,6 +584,7 @@ static const vrTest tests[] = {
     TEST(test_improved_distribution_meets_thesis_example),
     TEST(test_improved_distribution_needs_fewer_copies_on_random_60),
     TEST(test_messages_do_not_grow_with_objects),
+    TEST(test_fewer_rounds_change_no_bit),
 };
 
 const vrTestSuite vrSuite_Parallel = {"parallel", tests, TEST_COUNT(tests), run_serial, NULL, 1};

@@ -16,7 +16,9 @@
 #include "../tools/fuzz/lcm_replay.h"
 
 #define FRAME_NSTATES_AT 74   /* hash, run, seq, t (8 each), grid (40), two int8 */
-#define EARLIEST_STRING_AT 110 /* hash ... noverlap (110 bytes: approach and point are 32, records 8), with noverlap = 0 */
+/* hash ... noverlap (110 bytes: approach and point are 32, records 8), with
+ * noverlap = 0, then the answer's fields (62 bytes with nstates = 0) */
+#define EARLIEST_STRING_AT 172
 
 static void put_be32(unsigned char *b, unsigned v)
 {

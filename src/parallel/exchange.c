@@ -6,9 +6,10 @@
  * exited, is declared dead.
  *
  *   sender                 the worker an answer is from, if it is awaited
+ *   take_answer            the answer to its event an earliest carries
  *   take_*                 an answer of each kind (the VR_HANDLER callbacks)
  *   resend / send_request  the request to every worker, or a setup each
- *   exited                 a forked worker that is gone
+ *   round_kind, exited     a round's kind (stats rounds); a forked worker that is gone
  */
 #include <string.h>
 #include <sys/wait.h>
@@ -57,11 +58,28 @@ static void note_error(vrSgp *s, int gp, const char *error)
 
 static void count_malformed(vrSgp *s) { s->malformed++; }
 
+/* the answer to its event a worker sent with it (answered): its states,
+ * taken if its event is the first of all */
+static int take_answer(vrSgp *s, vrGpInfo *g, const vroc_earliest_t *m)
+{
+    g->answer.n = 0;
+    g->answered = m->found && m->answered;
+    g->answer_cost.solves = m->answer_solves;
+    g->answer_cost.refactors = m->answer_refactors;
+    g->answer_cost.factors = m->answer_factors;
+    return g->answered ? vrWire_GetStates(m->states, m->nstates, s->max_id, &g->answer) : 0;
+}
+
+static int bad_event(const vroc_earliest_t *m)
+{
+    return m->found && (!isfinite(m->t) || m->kind <= VR_EV_NONE || m->kind > VR_EV_PUSHOUT || !isfinite(m->approach)
+                        || !isfinite(m->point[0]) || !isfinite(m->point[1]) || !isfinite(m->point[2]));
+}
+
 static void take_earliest(vrSgp *s, const vroc_earliest_t *m)
 {
     vrGpInfo *g = sender(s, m->run, m->seq, m->gp, WAIT_EARLIEST);
-    if (g && m->found && (!isfinite(m->t) || m->kind <= VR_EV_NONE || m->kind > VR_EV_PUSHOUT || !isfinite(m->approach)
-                          || !isfinite(m->point[0]) || !isfinite(m->point[1]) || !isfinite(m->point[2]))) {
+    if (g && (bad_event(m) || take_answer(s, g, m) != 0)) {
         s->malformed++;
         g = NULL;
     }
@@ -73,8 +91,13 @@ static void take_earliest(vrSgp *s, const vroc_earliest_t *m)
     g->kind = m->kind;
     g->approach = m->approach;
     g->point = vec3_make(m->point[0], m->point[1], m->point[2]);
+    g->quiet = m->quiet && !m->found;
     g->now.checks = m->checks;
     g->now.heap_pops = m->heap_pops;
+    g->now.solves = m->solves;
+    g->now.refactors = m->refactors;
+    g->now.factors = m->factors;
+    if (isfinite(m->busy_ms)) g->busy_ms = m->busy_ms;
     g->copies = m->copies;
     g->records = m->records;
     note_overlaps(s, m);
@@ -174,13 +197,21 @@ static void send_request(vrSgp *s)
     else vrLink_Publish(&s->link, s->req_channel, s->req.data, s->req.len);
 }
 
+static int round_kind(const vrSgp *s)
+{
+    if (s->setup_round) return ROUND_SETUP;
+    if (!strcmp(s->req_channel, VR_CH_FORWARD)) return ROUND_FORWARD;
+    if (!strcmp(s->req_channel, VR_CH_ADVANCE)) return ROUND_ADVANCE;
+    return !strcmp(s->req_channel, VR_CH_CONTACTS) ? ROUND_CONTACTS : ROUND_FRAME;
+}
+
 static int exited(vrGpInfo *g)
 {
     int status;
     return g->pid > 0 && waitpid(g->pid, &status, WNOHANG) == g->pid;
 }
 
-int vrSgp_Exchange(vrSgp *s, int waiting, int target)
+static int exchange(vrSgp *s, int waiting, int target)
 {
     double start = vrLink_NowMs(), last, before, interval = RESEND_MS;
     int i, died = 0;
@@ -222,4 +253,15 @@ int vrSgp_Exchange(vrSgp *s, int waiting, int target)
         }
         if (died) return 1;
     }
+}
+
+int vrSgp_Exchange(vrSgp *s, int waiting, int target)
+{
+    double start = vrLink_NowMs();
+    int died;
+    s->rounds[round_kind(s)]++;
+    s->quiet = 0;                        /* sgp.c sets it after a look-ahead */
+    died = exchange(s, waiting, target);
+    s->wait_ms += vrLink_NowMs() - start;
+    return died;
 }

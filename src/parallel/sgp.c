@@ -2,10 +2,14 @@
  * coordinator of its workers (SPEC 5), an owner set (ownerset.h).
  *
  * It holds every object (it renders and dumps them) and never queries a
- * pair itself.  Per frame, the thesis's protocol: frame_start to all, each
- * worker's earliest; while there is an event: advance (the responder
- * answers with its update), then the update forwarded to all with the next
- * span's grid, and the earliest again.  Rounds per frame = 1 + events.
+ * pair itself.  Per frame, the thesis's protocol with the answer folded
+ * into the look-ahead: frame_start to all, each worker's earliest, which
+ * carries the worker's answer to its own event (the states it makes);
+ * while there is an event, the first of all's answer is taken from its
+ * earliest and forwarded to all with the next span's grid, and the
+ * earliest comes again.  Rounds per frame = 1 + events (+ the island
+ * steps' rounds); the thesis's advance round, where the responder
+ * answered, is left for a responder whose earliest carried no answer.
  * Each round is an exchange (exchange.c): resent until answered.  A worker
  * declared dead sends the frame back to its start with the dead worker's
  * pairs dealt to the survivors (setup.c) — a pair's state at a frame start
@@ -14,7 +18,9 @@
  *
  *   recover / snapshot   the frame start kept, and the frame redone from it
  *   encode_frame_start   the span's first request; encode_forward the others
+ *   put_owed             an island step answered without a round, told with the next request
  *   earliest_of_all      the first event of all, by (time, pair order)
+ *   taken_answer         the responder's answer from its earliest
  *   sgp_*                the owner set's operations; sgp_end_frame also
  *                        publishes the frame's sounds on VROC_SOUND (SPEC 8)
  */
@@ -48,6 +54,8 @@ static int recover(vrWorld *w, char *err, size_t n)
         memset(&s->gp[i].now, 0, sizeof s->gp[i].now);
     }
     w->pending.n = 0;
+    s->taken = -1;
+    s->owed_h = 0;
     if (vrSgp_AppendStates(&w->pending, &s->snap_pending) != 0) return snprintf(err, n, "out of memory"), -1;
     s->snap_pending.n = 0;
     if (vrSgp_Setup(w, s, err, n) != 0) return -1;
@@ -65,6 +73,14 @@ static void snapshot(vrWorld *w, vrSgp *s)
     s->snap_island_contacts = w->island_contacts;
     s->snap_clamps = w->clamps;
     for (i = 0; i < s->n; i++) s->snap_counts[i] = vrSgp_Counts(s, i);
+}
+
+/* the island step answered without a round goes with the next request */
+static void put_owed(vrSgp *s, double *t, double *h)
+{
+    *t = s->owed_t;
+    *h = s->owed_h;
+    s->owed_h = 0;
 }
 
 /* check: ids[0..nids) are the bodies whose overlaps are asked for */
@@ -86,10 +102,12 @@ static int encode_frame_start(vrWorld *w, vrSgp *s, const vrGrid *g, int allow, 
     m.states = ws.m;
     if (check && nids > 0 && !(m.owed = malloc((size_t)nids * sizeof *m.owed))) r = -1;
     for (m.nowed = 0; m.owed && m.nowed < nids; m.nowed++) m.owed[m.nowed] = ids[m.nowed];
+    put_owed(s, &m.island_t, &m.island_h);
     if (r == 0) r = VR_ENCODE(&s->req, vroc_frame_start_t, &m);
     free(m.owed);
     vrWire_FreeStates(&ws);
     s->req_channel = VR_CH_FRAME;
+    s->taken = -1;
     return r;
 }
 
@@ -109,9 +127,12 @@ static int encode_forward(vrWorld *w, vrSgp *s, const vrGrid *g, int allow)
     m.states = ws.m;
     vrWire_PutGrid(&m.grid, g);
     m.allow_instant = (int8_t)allow;
+    m.taken = s->taken;
+    put_owed(s, &m.island_t, &m.island_h);
     if (r == 0) r = VR_ENCODE(&s->req, vroc_update_t, &m);
     vrWire_FreeStates(&ws);
     s->req_channel = VR_CH_FORWARD;
+    s->taken = -1;
     return r;
 }
 
@@ -137,6 +158,18 @@ static int earliest_of_all(vrSgp *s, vrEvent *ev)
     return 1;
 }
 
+/* every worker's look-ahead found nothing, and an island step at its end
+ * would find nothing either */
+static int all_quiet(const vrSgp *s)
+{
+    int i, k = 0;
+    for (i = 0; i < s->n; i++) {
+        if (s->gp[i].alive && !s->gp[i].quiet) return 0;
+        k += s->gp[i].alive;
+    }
+    return k > 0;
+}
+
 static int sgp_first_event(vrWorld *w, const vrGrid *g, int allow, vrEvent *ev, char *err, size_t n)
 {
     vrSgp *s = w->sgp;
@@ -160,13 +193,34 @@ static int sgp_first_event(vrWorld *w, const vrGrid *g, int allow, vrEvent *ev, 
     if (r != 0) return snprintf(err, n, "out of memory"), -1;
     if (vrSgp_Exchange(s, WAIT_EARLIEST, -1)) return recover(w, err, n);
     if (s->error[0]) return snprintf(err, n, "%s", s->error), -1;
+    s->quiet = all_quiet(s);
+    s->quiet_t = g->T;
     return earliest_of_all(s, ev);
+}
+
+/* The responder's answer to ev from its earliest, if it sent one: its
+ * KLU counts join its statistics (the worker counts it from the next
+ * forward on, which says it was taken). */
+static int taken_answer(vrSgp *s, const vrEvent *ev, vrUpdate *up)
+{
+    vrGpInfo *g = &s->gp[s->responder];
+    if (!g->answered || g->order != ev->order || g->t != ev->t) return 0;
+    g->now.solves += g->answer_cost.solves;
+    g->now.refactors += g->answer_cost.refactors;
+    g->now.factors += g->answer_cost.factors;
+    g->answered = 0;
+    s->taken = s->responder;
+    return vrSgp_AppendStates(up, &g->answer) == 0 ? 1 : -1;
 }
 
 static int sgp_respond(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, size_t n)
 {
     vrSgp *s = w->sgp;
     vroc_advance_t m;
+    int r;
+    up->n = 0;
+    s->taken = -1;
+    if ((r = taken_answer(s, ev, up)) != 0) return r > 0 ? 0 : (snprintf(err, n, "out of memory"), -1);
     m.run = s->run;
     m.seq = ++s->seq;
     m.t = ev->t;
@@ -175,7 +229,6 @@ static int sgp_respond(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, s
     if (VR_ENCODE(&s->req, vroc_advance_t, &m) != 0) return snprintf(err, n, "out of memory"), -1;
     s->req_channel = VR_CH_ADVANCE;
     if (vrSgp_Exchange(s, WAIT_UPDATE, s->responder)) return recover(w, err, n);
-    up->n = 0;
     return vrSgp_AppendStates(up, &s->reply) == 0 ? 0 : (snprintf(err, n, "out of memory"), -1);
 }
 
@@ -227,8 +280,12 @@ static int sgp_overlapping(vrWorld *w, double tol, const int *ids, int nids, int
     return s->noverlap;
 }
 
-/* an island step: ask every worker for the pairs that touch (a round at
- * each island step; the states they need went with the last round) */
+/* An island step: ask every worker for the pairs that touch (a round at
+ * each island step; the states they need went with the last round).  When
+ * the last round was the look-ahead that ended here, every worker said
+ * an island step would find nothing of its (quiet) and no state changed
+ * since, the answer is known: none, and the workers do the step with the
+ * next request (owed). */
 static int sgp_touching(vrWorld *w, double t, double h, vrTouches *out, char *err, size_t n)
 {
     vrSgp *s = w->sgp;
@@ -239,6 +296,12 @@ static int sgp_touching(vrWorld *w, double t, double h, vrTouches *out, char *er
         snapshot(w, s);
         s->frame_open = s->frame_fresh = 1;
     }
+    if (h > 0 && s->quiet && s->quiet_t == t && w->pending.n == 0 && !(s->owed_h > 0)) {
+        s->owed_t = t;
+        s->owed_h = h;
+        s->quiet = 0;
+        return 0;
+    }
     memset(&m, 0, sizeof m);
     memset(&ws, 0, sizeof ws);
     r = vrWire_PutStates(&ws, &w->pending);
@@ -248,10 +311,12 @@ static int sgp_touching(vrWorld *w, double t, double h, vrTouches *out, char *er
     m.h = h;
     m.nstates = ws.n;
     m.states = ws.m;
+    put_owed(s, &m.island_t, &m.island_h);
     s->error[0] = 0;
     s->touches.n = 0;
     if (r == 0) r = VR_ENCODE(&s->req, vroc_contacts_t, &m);
     vrWire_FreeStates(&ws);
+    s->taken = -1;
     if (r == 0) r = vrSgp_Delivered(w, s);
     if (r != 0) return snprintf(err, n, "out of memory"), -1;
     s->req_channel = VR_CH_CONTACTS;
@@ -275,12 +340,15 @@ void vrSgp_Stats(const vrSgp *s, vrStats *st)
     st->messages = s->requests + s->received;
     st->foreign = s->foreign;
     st->malformed = s->malformed;
+    for (i = 0; i < ROUND_KINDS; i++) st->rounds[i] = s->rounds[i];
+    st->wait_ms = s->wait_ms;
     for (i = 0; i < s->n && i < 64; i++) {
         const vrGpInfo *g = &s->gp[i];
         vrGpCounts c = vrSgp_Counts(s, i);
         st->gp_checks[i] = c.checks;
         st->gp_copies[i] = g->alive ? g->copies : 0;
         st->gp_pairs[i] = g->alive ? g->pairs : 0;
+        st->gp_busy_ms += g->busy_ms;
         st->checks += c.checks;
         st->heap_pops += c.heap_pops;
         st->klu_solves += c.solves;
@@ -314,6 +382,7 @@ int vrSgp_Sync(vrWorld *w, char *err, size_t n)
     if (!s) {
         w->sgp = s = vrSgp_Open(&w->s, err, n);
         if (!s) return -1;
+        s->taken = -1;
     }
     s->max_id = w->table.n;
     return s->structure == w->structure ? 0 : vrSgp_Setup(w, s, err, n);

@@ -18,6 +18,10 @@
  * for the answer to another request */
 enum { WAIT_EARLIEST, WAIT_UPDATE, WAIT_CANDIDATES };
 
+/* the rounds by request (stats rounds): frame starts (and start checks),
+ * forwarded events, advances, island steps, setups */
+enum { ROUND_FRAME, ROUND_FORWARD, ROUND_ADVANCE, ROUND_CONTACTS, ROUND_SETUP, ROUND_KINDS };
+
 /* a worker's owner's counters (stats keys) */
 typedef struct vrGpCounts { long long checks, heap_pops, solves, refactors, factors; } vrGpCounts;
 
@@ -33,6 +37,11 @@ typedef struct vrGpInfo {
     int kind;
     double approach;            /* and its n.u and point: what its sound is made of */
     vec3 point;
+    vrUpdate answer;            /* its answer to its event, from its earliest (answered) */
+    int answered;
+    vrGpCounts answer_cost;     /* the KLU counts that answer adds to now's */
+    double busy_ms;             /* its time on requests, as it last said */
+    int quiet;                  /* its last look-ahead found nothing, nor would an island step */
     vrGpCounts now;             /* of its owner, as it last said */
     vrGpCounts before;          /* of the owners it had before: a setup makes a new one */
     int copies, pairs;          /* its objects; its share of the pairs (the deal's count) */
@@ -49,6 +58,10 @@ struct vrSgp {
     long long run, seq;
     long structure;             /* the world's, at the last setup */
     int waiting, responder, setup_round, max_id;
+    int taken;                  /* the worker whose answer the next forward carries, or -1 */
+    int quiet;                  /* the last round was a look-ahead to quiet_t and every worker was quiet */
+    double quiet_t;
+    double owed_t, owed_h;      /* an island step answered without a round (owed_h > 0), for the next request */
     vrBuf req;                  /* the broadcast request awaiting answers */
     const char *req_channel;
     vrUpdate reply;             /* the responder's states */
@@ -63,6 +76,8 @@ struct vrSgp {
     vrGpCounts snap_counts[VR_MAX_GPS];  /* each worker's counts then (before + now) */
     long long requests, received, foreign, malformed;
     double idle_ms;             /* of the current exchange: waits in which no message came */
+    long long rounds[ROUND_KINDS];
+    double wait_ms;             /* in exchanges: waiting for answers (and in-process workers' work) */
     lcm_subscription_t *subs[4];
 };
 

@@ -120,6 +120,7 @@ void vrSgp_Free(vrSgp *s)
             nanosleep(&pause, NULL);
         }
         vrBuf_Free(&s->gp[i].setup);
+        vrUpdate_Free(&s->gp[i].answer);
     }
     vrSgp_Unsubscribe(s);
     vrLink_Close(&s->link);

@@ -3,7 +3,10 @@
  * one vrOwner over its pairs) is worker_hold.c's; its answers and
  * heartbeats, worker_reply.c's; its state, worker_state.h.
  *
+ *   answer_ahead   the answer to its own event, sent with it (one round an event)
  *   look_ahead, check_overlaps   a span's first event; the overlaps of a check
+ *   start_request  a new request: the last answer's fate, the busy clock
+ *   owed_island    an island step the SGP answered without a round, done late
  *   maybe_die      VROC_FAULT_KILL, for the tests of a dying worker
  *   take_*         a request of each kind (the VR_HANDLER callbacks)
  */
@@ -24,6 +27,27 @@
 
 /* ---- requests ---------------------------------------------------------------------------- */
 
+/* Its answer to its event, made with the look-ahead: when the event turns
+ * out to be the first of all, the SGP takes it from the earliest, and the
+ * event costs one round instead of an advance and its update as well.  A
+ * response reads only the bodies (vrEffect_Compute), which no clock move
+ * changes, so it is the answer an advance would get. */
+static void answer_ahead(vrWorker *k)
+{
+    vrOwnerStats before, after;
+    vrOwner_Stats(k->owner, &before);
+    k->answer.n = 0;
+    k->answered = vrOwner_Respond(k->owner, &k->first, &k->answer) == 0;
+    vrOwner_Stats(k->owner, &after);
+    k->answer_cost.solves = after.response.solves - before.response.solves;
+    k->answer_cost.refactors = after.response.refactors - before.response.refactors;
+    k->answer_cost.factors = after.response.factors - before.response.factors;
+    if (!k->answered) {          /* the advance finds it unanswerable too: silence */
+        k->answered = 1;
+        vrWorker_Settle(k, 0);
+    }
+}
+
 static void look_ahead(vrWorker *k, int64_t seq, const vroc_grid_t *grid, int allow)
 {
     vrGrid g;
@@ -34,7 +58,36 @@ static void look_ahead(vrWorker *k, int64_t seq, const vroc_grid_t *grid, int al
     }
     r = vrOwner_FirstEvent(k->owner, &g, allow, &k->first);
     k->has_first = r == 1;
+    k->quiet = r == 0 && !k->thesis_rounds && vrOwner_Quiet(k->owner);
+    if (k->has_first && !k->thesis_rounds) answer_ahead(k);
     vrWorker_SendEarliest(k, seq, r == 1, &k->first, 0, NULL, NULL, r < 0 ? "out of memory" : NULL);
+}
+
+/* a new request: the answer sent with the last earliest was not taken
+ * unless it says so; its work starts now */
+static void start_request(vrWorker *k, int taken)
+{
+    vrWorker_Settle(k, taken);
+    k->quiet = 0;
+    k->busy_from = vrLink_NowMs();
+}
+
+/* The island step the SGP answered without a round because every worker
+ * said it would find nothing (quiet): done now, where the contacts
+ * request would have done it (every clock at t, no state since), so that
+ * what it records (the step's time and length) is the same.  NULL, or
+ * what went wrong. */
+static const char *owed_island(vrWorker *k, double t, double h)
+{
+    vrTouches list = {0, 0, NULL};
+    int r, found;
+    if (!(h > 0)) return NULL;
+    if (!isfinite(t) || !isfinite(h)) return "bad island step";
+    vrOwner_Advance(k->owner, t);
+    r = vrOwner_Touching(k->owner, t, h, &list);
+    found = list.n;
+    vrTouches_Free(&list);
+    return r != 0 ? "out of memory" : found ? "an island step answered without a round had contacts" : NULL;
 }
 
 static void check_overlaps(vrWorker *k, int64_t seq, double t, const int32_t *owed, int nowed)
@@ -73,6 +126,8 @@ static void take_setup(vrWorker *k, const vroc_setup_t *m)
         k->frames = 0;
     }
     if (vrWorker_Fresh(k, m->run, m->seq)) {
+        start_request(k, 0);
+        memset(&k->wasted, 0, sizeof k->wasted);   /* a new owner counts from 0 */
         k->gp = m->gp;
         if (vrWorker_SetUp(k, m, err, sizeof err) != 0 && !err[0]) strcpy(err, "setup failed");
         vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, err[0] ? err : NULL);
@@ -80,7 +135,8 @@ static void take_setup(vrWorker *k, const vroc_setup_t *m)
 }
 
 /* VROC_FAULT_KILL=gp:frame[:round] — the worker dies at that frame's
- * start, or at its round-th advance, in the middle of the frame (tests) */
+ * start, or at its round-th event (forward), in the middle of the frame
+ * (tests) */
 static void maybe_die(vrWorker *k)
 {
     if (k->gp != k->kill_gp || k->frames != k->kill_frame || k->rounds != k->kill_round) return;
@@ -90,37 +146,43 @@ static void maybe_die(vrWorker *k)
 
 static void take_frame(vrWorker *k, const vroc_frame_start_t *m)
 {
+    const char *bad;
     if (!k->owner || !vrWorker_Fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
+    start_request(k, 0);
     if (!m->check) {
         k->frames++;
         k->rounds = 0;
         maybe_die(k);
     }
     if (k->silent) return;
+    if ((bad = owed_island(k, m->island_t, m->island_h)) != NULL) {
+        vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, bad);
+        return;
+    }
     vrOwner_Advance(k->owner, m->t);
     if (vrWorker_ApplyStates(k, m->states, m->nstates) != 0) vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, "bad body state");
     else if (m->check) check_overlaps(k, m->seq, m->t, m->owed, m->nowed);
     else look_ahead(k, m->seq, &m->grid, m->allow_instant);
 }
 
+/* the SGP asks for the answer to our event (it lacked the one our
+ * earliest carried) */
 static void take_advance(vrWorker *k, const vroc_advance_t *m)
 {
     vroc_update_t u;
     vrWireStates ws;
     vrResponseStats rs;
-    vrOwnerStats os;
     if (!k->owner || !vrWorker_Fresh(k, m->run, m->seq)) return;
-    k->rounds++;
-    maybe_die(k);
     if (k->silent || m->responder != k->gp) return;
     if (!k->has_first || k->first.order != m->order || k->first.t != m->t) return;
+    k->busy_from = vrLink_NowMs();
     vrOwner_Advance(k->owner, m->t);
-    k->scratch.n = 0;
-    if (vrOwner_Respond(k->owner, &k->first, &k->scratch) != 0) return;   /* silence: the SGP gives up on us */
+    if (!k->answered) answer_ahead(k);
+    if (!k->answered) return;            /* silence: the SGP gives up on us */
+    vrWorker_Settle(k, 1);
     memset(&u, 0, sizeof u);
     memset(&ws, 0, sizeof ws);
-    vrOwner_Stats(k->owner, &os);
-    rs = os.response;
+    rs = vrWorker_Counts(k);
     u.run = k->run;
     u.seq = m->seq;
     u.gp = k->gp;
@@ -128,17 +190,28 @@ static void take_advance(vrWorker *k, const vroc_advance_t *m)
     u.solves = rs.solves;
     u.refactors = rs.refactors;
     u.factors = rs.factors;
-    if (vrWire_PutStates(&ws, &k->scratch) == 0) {
+    u.taken = k->gp;
+    if (vrWire_PutStates(&ws, &k->answer) == 0) {
         u.nstates = ws.n;
         u.states = ws.m;
         if (VR_ENCODE(&k->reply, vroc_update_t, &u) == 0) vrWorker_Answer(k, VR_CH_UPDATE, m->seq);
     }
     vrWire_FreeStates(&ws);
+    vrWorker_NoteBusy(k);
 }
 
 static void take_forward(vrWorker *k, const vroc_update_t *m)
 {
+    const char *bad;
     if (!k->owner || m->gp >= 0 || !vrWorker_Fresh(k, m->run, m->seq) || !isfinite(m->t)) return;
+    start_request(k, m->taken == k->gp);
+    k->rounds++;
+    maybe_die(k);
+    if (k->silent) return;
+    if ((bad = owed_island(k, m->island_t, m->island_h)) != NULL) {
+        vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, bad);
+        return;
+    }
     vrOwner_Advance(k->owner, m->t);
     if (vrWorker_ApplyStates(k, m->states, m->nstates) != 0) vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, "bad body state");
     else look_ahead(k, m->seq, &m->grid, m->allow_instant);
@@ -165,17 +238,30 @@ static void report_touches(vrWorker *k, const vroc_contacts_t *m)
     if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) vrWorker_Answer(k, VR_CH_CANDIDATES, m->seq);
     vrWire_FreeTouches(&r);
     vrTouches_Free(&list);
+    vrWorker_NoteBusy(k);
+}
+
+/* an island step's answer that names what went wrong */
+static void touches_failed(vrWorker *k, int64_t seq, const char *why)
+{
+    vroc_candidates_t r;
+    memset(&r, 0, sizeof r);
+    r.run = k->run, r.seq = seq, r.gp = k->gp, r.error = (char *)why;
+    if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) vrWorker_Answer(k, VR_CH_CANDIDATES, seq);
 }
 
 static void take_contacts(vrWorker *k, const vroc_contacts_t *m)
 {
+    const char *bad;
     if (!k->owner || !vrWorker_Fresh(k, m->run, m->seq) || !isfinite(m->t) || !(m->h >= 0)) return;
+    start_request(k, 0);
+    if ((bad = owed_island(k, m->island_t, m->island_h)) != NULL) {
+        touches_failed(k, m->seq, bad);
+        return;
+    }
     vrOwner_Advance(k->owner, m->t);
     if (vrWorker_ApplyStates(k, m->states, m->nstates) != 0) {
-        vroc_candidates_t r;
-        memset(&r, 0, sizeof r);
-        r.run = k->run, r.seq = m->seq, r.gp = k->gp, r.error = "bad body state";
-        if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) vrWorker_Answer(k, VR_CH_CANDIDATES, m->seq);
+        touches_failed(k, m->seq, "bad body state");
         return;
     }
     report_touches(k, m);
@@ -198,6 +284,15 @@ VR_HANDLER(on_shutdown, vroc_shutdown_t, vrWorker, take_shutdown, ignore)
 
 /* ---- life ----------------------------------------------------------------------------------- */
 
+/* VROC_THESIS_ROUNDS=1: the thesis's rounds, for the bench's and the
+ * tests' comparison: no answer with the earliest (an advance round per
+ * event) and never quiet (a round at every island step) */
+static void parse_knobs(vrWorker *k)
+{
+    const char *a = getenv("VROC_THESIS_ROUNDS");
+    k->thesis_rounds = a && strcmp(a, "1") == 0;
+}
+
 static void parse_kill(vrWorker *k)
 {
     const char *v = getenv("VROC_FAULT_KILL");
@@ -218,7 +313,9 @@ vrWorker *vrWorker_Create(vrLink *link, long long nonce, int forked)
     k->gp = -1;
     k->last_seq = k->reply_seq = -1;
     vrUpdate_Init(&k->scratch);
+    vrUpdate_Init(&k->answer);
     parse_kill(k);
+    parse_knobs(k);
     k->subs[0] = lcm_subscribe(link->lcm, VR_CH_SETUP, on_setup, k);
     k->subs[1] = lcm_subscribe(link->lcm, VR_CH_FRAME, on_frame, k);
     k->subs[2] = lcm_subscribe(link->lcm, VR_CH_ADVANCE, on_advance, k);
@@ -241,6 +338,7 @@ void vrWorker_Free(vrWorker *k)
     vrOwner_Free(k->owner);
     vrTable_Free(&k->objects);
     vrUpdate_Free(&k->scratch);
+    vrUpdate_Free(&k->answer);
     vrBuf_Free(&k->reply);
     free(k->ids);
     free(k->setup_pending);

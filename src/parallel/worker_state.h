@@ -31,11 +31,18 @@ struct vrWorker {
     vrEvent first;                /* the first event it last reported */
     int has_first;
     vrUpdate scratch;
+    vrUpdate answer;              /* its answer to `first`, sent with it (answered) */
+    int answered;
+    int thesis_rounds;            /* VROC_THESIS_ROUNDS=1 */
+    int quiet;                    /* the last look-ahead found nothing, nor would an island step (vrOwner_Quiet) */
+    vrResponseStats answer_cost;  /* the KLU counts that answer added */
+    vrResponseStats wasted;       /* those of answers not taken: not in its statistics */
+    double busy_ms, busy_from;    /* time spent on requests; the current one's start */
     int *ids;
     int idcap;
     long frames;
     int kill_gp, kill_frame;      /* VROC_FAULT_KILL=gp:frame[:round] */
-    int kill_round, rounds;       /* ...at that frame's round-th advance (0: at its start) */
+    int kill_round, rounds;       /* ...at that frame's round-th event (0: at its start) */
     int silent, done;
     double last_hello;
     lcm_subscription_t *subs[6];

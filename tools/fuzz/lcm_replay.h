@@ -39,7 +39,10 @@ static void lcm_replay_sgp_side(int kind, const unsigned char *p, int len)
     vrUpdate_Init(&up);
     memset(&touches, 0, sizeof touches);
     if (kind == REC_HELLO && LCM_REPLAY_DECODE(vroc_hello_t, p, len, h)) vroc_hello_t_decode_cleanup(&h);
-    if (kind == REC_EARLIEST && LCM_REPLAY_DECODE(vroc_earliest_t, p, len, e)) vroc_earliest_t_decode_cleanup(&e);
+    if (kind == REC_EARLIEST && LCM_REPLAY_DECODE(vroc_earliest_t, p, len, e)) {
+        vrWire_GetStates(e.states, e.nstates, 64, &up);   /* the answer it carries */
+        vroc_earliest_t_decode_cleanup(&e);
+    }
     if (kind == REC_UPDATE && LCM_REPLAY_DECODE(vroc_update_t, p, len, u)) {
         vrWire_GetStates(u.states, u.nstates, 64, &up);
         vrWire_GetGrid(&u.grid, &grid);

@@ -1,7 +1,8 @@
 /* lcm_seeds.c — writes fuzz_lcm's first corpus into DIR: one session a
  * worker would see (setup of two spheres and their deal, a frame, an
- * advance, a forwarded update, contacts, shutdown) and one message of each
- * of the SGP's kinds, each well formed, so that the fuzzer starts from
+ * advance, a forwarded update that takes worker 0's answer, contacts,
+ * shutdown) and one message of each of the SGP's kinds (an earliest with
+ * the answer to its event), each well formed, so that the fuzzer starts from
  * messages that pass the nonce, run and sequence checks. */
 #include <stdio.h>
 #include <string.h>
@@ -89,7 +90,7 @@ static int session(const char *dir)
     PUT(REC_FRAME, vroc_frame_start_t, &f);
     PUT(REC_ADVANCE, vroc_advance_t, &adv);
     memset(&u, 0, sizeof u);
-    u.run = RUN, u.seq = 4, u.t = 0.05, u.nstates = 2, u.states = states, u.grid = f.grid;
+    u.run = RUN, u.seq = 4, u.t = 0.05, u.nstates = 2, u.states = states, u.grid = f.grid, u.taken = 0;
     PUT(REC_FORWARD, vroc_update_t, &u);
     memset(&c, 0, sizeof c);
     c.run = RUN, c.seq = 5, c.t = 0.06, c.h = 0.004, c.nstates = 2, c.states = states;
@@ -102,6 +103,7 @@ static int session(const char *dir)
 
 static int sgp_kinds(const char *dir)
 {
+    vroc_body_state_t answer[2];
     vroc_hello_t h = {1, 42, RUN, 0, 1};
     vroc_earliest_t e;
     vroc_candidates_t c;
@@ -111,6 +113,9 @@ static int sgp_kinds(const char *dir)
     if (save(dir, "hello") != 0) return -1;
     memset(&e, 0, sizeof e);
     e.run = RUN, e.seq = 2, e.found = 1, e.t = 0.05, e.approach = -1.5, e.a = &a, e.b = &b, e.error = "";
+    state_at(&answer[0], 0, -0.5);       /* the answer to its event, as a responder sends it */
+    state_at(&answer[1], 1, 0.5);
+    e.answered = 1, e.nstates = 2, e.states = answer, e.answer_solves = 1, e.busy_ms = 0.25;
     PUT(REC_EARLIEST, vroc_earliest_t, &e);
     if (save(dir, "earliest") != 0) return -1;
     memset(&c, 0, sizeof c);
