@@ -271,15 +271,21 @@ static int test_solve_never_adds_kinetic_energy(void)
     return 0;
 }
 
-/* the step's energy (island.h) of b: kinetic, less the work the force paid
- * in does over the step's flight at v */
+/* the step's energy (island.h) of b, n <= 16: kinetic, less the work the
+ * force paid in does over the step's flight at v; here as the kinetic
+ * energy seen from a frame moving at `paid`, less that frame's own
+ * (m |v - paid|^2 / 2 - m |paid|^2 / 2 = m |v|^2 / 2 - m paid.v) */
 static double step_energy(const vrIslandBody *b, int n)
 {
-    double e = kinetic(b, n);
+    vrIslandBody moved[16];
+    double own = 0;
     int i;
-    for (i = 0; i < n; i++)
-        if (b[i].dynamic) e -= vec3_dot(b[i].paid, b[i].v) / b[i].inv_mass;
-    return e;
+    memcpy(moved, b, (size_t)n * sizeof *b);
+    for (i = 0; i < n; i++) {
+        moved[i].v = vec3_sub(b[i].v, b[i].paid);
+        if (b[i].dynamic) own += 0.5 * vec3_len2(b[i].paid) / b[i].inv_mass;
+    }
+    return kinetic(moved, n) - own;
 }
 
 /* Ten boxes resting on the floor, the step's gravity paid in, each
