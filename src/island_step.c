@@ -104,7 +104,7 @@ static void island_body(vrWorld *w, int id, double t, vec3 gh, vrIslandBody *out
     out->inv_mass = !out->dynamic ? 0 : b->inv_mass;
     if (b->is_static) return;
     vrBody_Velocity(b, t, &out->v);   /* a held body: the hand's motion, no force */
-    if (out->dynamic) out->v = vec3_add(out->v, gh);
+    if (out->dynamic) out->v = vec3_add(out->v, gh), out->paid = gh;
     out->w = vrBody_Omega(b, &pose);
 }
 

@@ -85,8 +85,13 @@ int vrLcp_SolveWith(const double *A, const double *q, int n, double *x, vrLcpFac
         for (i = 0; i < m; i++) x[idx[i]] = y[i];
         for (i = 0; i < n && bad < 0; i++) {
             double w = q[i], size = fabs(q[i]);
-            for (j = 0; j < n; j++) w += A[i * n + j] * x[j], size += fabs(A[i * n + j] * x[j]);
-            if ((in[i] && x[i] < 0) || (!in[i] && w < -ROUNDING * size)) bad = i;
+            if (in[i]) {               /* w_i = 0 there: only x_i's sign is asked */
+                if (x[i] < 0) bad = i;
+                continue;
+            }
+            /* the x outside the basis are 0 and add nothing, not even a bit */
+            for (j = 0; j < m; j++) w += A[i * n + idx[j]] * y[j], size += fabs(A[i * n + idx[j]] * y[j]);
+            if (w < -ROUNDING * size) bad = i;
         }
         if (bad < 0) return 0;
         in[bad] = !in[bad];

@@ -2,6 +2,7 @@
  * a bit of the motion (SPEC 3.2, 3.3): heap on and off, reruns, switching it
  * mid-run, deleting and adding bodies and six drawn scenes of things on a
  * table all give the same dumps; far furniture costs no checks. */
+#include <stddef.h>
 #include <string.h>
 #include "test.h"
 #include "vroc.h"
@@ -28,6 +29,14 @@ static vrWorld *ball_among_furniture(int pieces, int heap, vrObjectId *ball)
     return w;
 }
 
+/* the same bits in every member (memcmp of the whole struct also read its
+ * tail padding, which a copy by value need not keep: the test failed at
+ * random, about one run in two, in the release build) */
+static int same_state(const vrObjectState *a, const vrObjectState *b)
+{
+    return memcmp(a, b, offsetof(vrObjectState, state)) == 0 && a->state == b->state;
+}
+
 static int test_far_furniture_costs_no_checks(void)
 {
     vrObjectId b0, b1, b2;
@@ -41,7 +50,7 @@ static int test_far_furniture_costs_no_checks(void)
     printf("    checks: %lld alone, %lld among 20 cupboards (heap off: %lld)\n", vrScene_Stats(bare).checks,
            vrScene_Stats(full).checks, vrScene_Stats(off).checks);
     ENSURE(vrScene_Stats(bare).collisions > 5);
-    ENSURE(memcmp(&s0, &s1, sizeof s0) == 0 && memcmp(&s0, &s2, sizeof s0) == 0);
+    ENSURE(same_state(&s0, &s1) && same_state(&s0, &s2));
     ENSURE(vrScene_Stats(full).checks <= vrScene_Stats(bare).checks + 20);   /* one look each, at the start */
     /* heap = 0 looks at every pair that has a record at every internal
      * step; the far cupboards' pairs have none (SPEC 10, pair_life.c) */

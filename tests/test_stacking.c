@@ -40,13 +40,13 @@ static vrObjectId floor_of(vrWorld *w, double mu) { return box(w, "floor", vec3_
 static double energy(const vrWorld *w) { return vrScene_Stats(w).energy; }
 
 /* n frames, the energy checked after each: never above the last by more
- * than SPEC 7 allows an event (1e-9 E + 1e-9 J; per_event E + 1e-9 J)
- * times the frame's events (its island steps and the contacts answered);
- * 0, or 1 and the frame printed */
-static int steps_losing_energy_within(vrWorld *w, int n, double per_event);
-static int steps_losing_energy(vrWorld *w, int n) { return steps_losing_energy_within(w, n, 1e-9); }
+ * than SPEC 7 allows an event (1e-9 E + 1e-9 J) times the frame's events
+ * (its island steps and the contacts answered); 0, or 1 and the frame
+ * printed; `note`: the worst rise printed too */
+static int steps_losing_energy_noting(vrWorld *w, int n, int note);
+static int steps_losing_energy(vrWorld *w, int n) { return steps_losing_energy_noting(w, n, 0); }
 
-static int steps_losing_energy_within(vrWorld *w, int n, double per_event)
+static int steps_losing_energy_noting(vrWorld *w, int n, int note)
 {
     const vrSettings *s = vrWorld_Settings(w);
     double e = energy(w), steps = ceil(s->time_step / s->contact_step - 1e-9);
@@ -58,7 +58,7 @@ static int steps_losing_energy_within(vrWorld *w, int n, double per_event)
         if (vrScene_Step(w, 1) != 0) return 1;
         now = energy(w);
         events = steps + (double)(vrScene_Stats(w).collisions - answered);
-        if (now > e + events * (per_event * fabs(e) + 1e-9)) {
+        if (now > e + events * (1e-9 * fabs(e) + 1e-9)) {
             printf("    frame %d: energy rose from %.12g to %.12g (%g events)\n", f + 1, e, now, events);
             return 1;
         }
@@ -66,7 +66,7 @@ static int steps_losing_energy_within(vrWorld *w, int n, double per_event)
         e = now;
         answered = vrScene_Stats(w).collisions;
     }
-    if (per_event > 1e-9) printf("    the energy rose by at most %.2g E an event in a frame\n", worst);
+    if (note) printf("    the energy rose by at most %.2g E an event in a frame\n", worst);
     return 0;
 }
 
@@ -511,11 +511,33 @@ static void pile_settings(vrSettings *s)
     s->max_angular = 4;
 }
 
+/* Fifty random balls and boxes in a 3 m room (friction 0.5, e 0.5)
+ * settling under gravity: no frame's energy rises by more than SPEC 7's
+ * 1e-9 E + 1e-9 J an event.  Its islands of 30 and more stop at their 32
+ * sweeps short of the exact answer, with points pushed apart (an impulse
+ * while separating) that lift bodies: the kinetic energy after the solve
+ * was below the kinetic energy with the step's gravity in it, but the
+ * flight at the new velocities climbed, and frame 399 rose 3.7e-6 J
+ * (1.2e-8 E an event).  Now the step's energy is checked (island.h). */
+static int test_a_settling_pile_of_fifty_gains_no_energy(void)
+{
+    vrWorld *w = vrScene_World(0.01, 0.01, G);
+    char err[256];
+    room_side = 3;
+    vrScene_Set(w, pile_settings);
+    room_side = 4;
+    ENSURE(vrWorld_AddRandom(w, 50, err, sizeof err) == 0);
+    ENSURE(steps_losing_energy_noting(w, 420, 1) == 0);
+    printf("    %lld collisions, %lld island contacts in 420 frames\n", vrScene_Stats(w).collisions,
+           vrScene_Stats(w).island_contacts);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
 /* A hundred random balls and boxes (`random 100` in a 4 m room, friction
  * 0.5, e 0.5) dropped under gravity: the energy never rises by more than
- * 1e-8 E an event (SPEC 7 asks 1e-9, a known gap: an island of 40 bodies
- * stops at its 32 sweeps short of the exact answer, and the ground-up
- * pass that follows holds bodies that may be moving), and after 60 s at
+ * SPEC 7's 1e-9 E + 1e-9 J an event (1.9e-9 E before the step's energy was
+ * checked: see the pile of fifty above), and after 60 s at
  * least 95 rest (a ball spinning about the vertical no longer keeps its
  * island awake: point contacts twist against a 1 mm patch); started again from where they lie (every one
  * put there still), the world's start check finds none inside another. */
@@ -527,7 +549,7 @@ static int test_a_pile_of_a_hundred_settles(void)
     int n, i, resting;
     vrScene_Set(w, pile_settings);
     ENSURE(vrWorld_AddRandom(w, 100, err, sizeof err) == 0);
-    ENSURE(steps_losing_energy_within(w, 6000, 1e-8) == 0);
+    ENSURE(steps_losing_energy_noting(w, 6000, 1) == 0);
     resting = vrScene_Stats(w).resting;
     printf("    after 60 s: %d of 100 rest, %lld collisions\n", resting, vrScene_Stats(w).collisions);
     ENSURE(resting >= 95);
@@ -564,6 +586,7 @@ static const vrTest tests[] = {
     TEST(test_a_heavy_box_rests_on_light_balls_at_the_cost_of_a_light_one),
     TEST(test_an_icosahedron_tips_onto_a_face),
     TEST(test_an_elastic_newtons_cradle_sends_out_one_ball),
+    TEST(test_a_settling_pile_of_fifty_gains_no_energy),
     TEST(test_a_pile_of_a_hundred_settles),
 };
 
