@@ -5,7 +5,8 @@
 #                 tools/vroc-tracker (a track file published over LCM)
 #   make check    every test, built with ASan+UBSan (last line: N passed, M failed)
 #   make demo     runs scenes/demo.cmd and writes its frames and a picture
-#   make bench    prints the benchmarks (release build, bench/run.sh)
+#   make bench    prints the benchmarks (release build, bench/run.sh; installs ODE
+#                 for bench_ode, the peers' rooms run in ODE beside vroc)
 #   make fuzz     AFL++ for FUZZ_S seconds (last line: fuzz: N execs, M crashes, K hangs)
 #   make valgrind memcheck on every feature but the drawing (also in make check)
 #   make lint     cppcheck, clang-tidy (.clang-tidy), gcc -fanalyzer (last line: lint: N findings ...)
@@ -222,6 +223,18 @@ check-asan: asan-all $(PRODUCTS)
 
 bench: rel-all $(rel_BENCH)
 	@sh bench/run.sh build/rel
+
+# bench_ode (issue 26): the peers' rooms in ODE beside vroc, in one process.
+# Only it links -lode and only its object waits for ODE's headers (installed
+# by `install-deps.sh bench`, explicit targets for the reason given at
+# build/fuzz.stamp), so the rest of the build, `make` and `make check`, needs
+# no ODE.
+ODE_BENCH := $(foreach v,rel asan,build/$(v)/bench/bench_ode)
+$(ODE_BENCH): LIBS += -lode
+$(ODE_BENCH:=.o): | build/bench.stamp
+build/bench.stamp: tools/install-deps.sh
+	@sh tools/install-deps.sh bench
+	@mkdir -p build && touch $@
 
 demo: all
 	@sh tools/demo.sh

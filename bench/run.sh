@@ -1,7 +1,9 @@
 #!/bin/sh
 # make bench: runs every benchmark of the release build in turn
 # (BUILD/bench/bench_*, built from bench/bench_*.c), from the repo root.
-# Each prints its own table (and CSV lines starting with `csv,`).
+# Each prints its own table (and CSV lines starting with `csv,`); bench_ode
+# runs the peers' rooms in ODE (libode-dev, installed by make bench) and in
+# vroc, interleaved, and prints the ratio of the same minutes (issue 26).
 # Usage: bench/run.sh [BUILD_DIR]   (build/rel when not given)
 set -u
 build=${1:-build/rel}

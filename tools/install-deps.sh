@@ -2,9 +2,10 @@
 # Install the Debian packages VROC needs, only when a check says one is missing,
 # so that a machine that has everything pays nothing (make deps runs this).
 # Idempotent, non-interactive; needs root (or sudo) only when it installs.
-# Usage: install-deps.sh [fuzz] [lint] — the build's packages, and those of
-# `make fuzz` (AFL++) and `make lint` (cppcheck, clang-tidy) when named:
-# only those targets need them.
+# Usage: install-deps.sh [fuzz] [lint] [bench] — the build's packages, and
+# those of `make fuzz` (AFL++), `make lint` (cppcheck, clang-tidy) and
+# `make bench` (ODE 0.16.2, the peer engine bench_ode runs beside vroc) when
+# named: only those targets need them.
 set -eu
 
 missing=""
@@ -38,7 +39,8 @@ for group in "$@"; do
     fuzz) need afl++     command -v afl-clang-fast ;;
     lint) need cppcheck  command -v cppcheck
           need clang-tidy command -v clang-tidy ;;
-    *) echo "install-deps: unknown group '$group' (fuzz, lint)" >&2; exit 2 ;;
+    bench) need libode-dev have_file /usr/include/ode/ode.h ;;
+    *) echo "install-deps: unknown group '$group' (fuzz, lint, bench)" >&2; exit 2 ;;
     esac
 done
 
