@@ -24,6 +24,7 @@
 #include <lcm/lcm.h>
 #include "vroc.h"
 #include "../tests/netns.h"
+#include "in_child.h"
 
 #define UDPM "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 static const int workers[] = {0, 1, 2, 4, 8};
@@ -248,24 +249,19 @@ static Room room_run(int n, int gps, long frames)
     return r;
 }
 
+typedef struct RoomArgs { int n, gps; long frames; } RoomArgs;
+
+static void room_child(const void *ctx, void *out)
+{
+    const RoomArgs *a = ctx;
+    *(Room *)out = room_run(a->n, a->gps, a->frames);
+}
+
 static Room room_in_child(int n, int gps, long frames)
 {
+    RoomArgs a = {n, gps, frames};
     Room r;
-    int fd[2];
-    pid_t pid;
-    memset(&r, 0, sizeof r);
-    fflush(stdout);
-    if (pipe(fd) != 0) return r;
-    if ((pid = fork()) == 0) {
-        Room c = room_run(n, gps, frames);
-        close(fd[0]);
-        if (write(fd[1], &c, sizeof c) != (ssize_t)sizeof c) _exit(2);
-        _exit(0);
-    }
-    close(fd[1]);
-    if (pid < 0 || read(fd[0], &r, sizeof r) != (ssize_t)sizeof r) memset(&r, 0, sizeof r);
-    close(fd[0]);
-    if (pid > 0) waitpid(pid, NULL, 0);
+    bench_in_child(room_child, &a, &r, sizeof r);
     return r;
 }
 

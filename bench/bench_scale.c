@@ -32,6 +32,7 @@
 
 #include "vroc.h"
 #include "../tests/netns.h"
+#include "in_child.h"
 #include "../tests/peak_mem.h"
 
 #define FRAMES 20
@@ -128,25 +129,20 @@ static Result measure(int n, double side, int gps, const char *url, int frames)
     return r;
 }
 
+typedef struct Args { int n, gps, frames; double side; const char *url; } Args;
+
+static void measure_child(const void *ctx, void *out)
+{
+    const Args *a = ctx;
+    *(Result *)out = measure(a->n, a->side, a->gps, a->url, a->frames);
+}
+
 /* measure() in a fresh child, its result through a pipe */
 static Result in_child(int n, double side, int gps, const char *url, int frames)
 {
+    Args a = {n, gps, frames, side, url};
     Result r;
-    int fd[2];
-    pid_t pid;
-    memset(&r, 0, sizeof r);
-    fflush(stdout);
-    if (pipe(fd) != 0) return r;
-    if ((pid = fork()) == 0) {
-        Result c = measure(n, side, gps, url, frames);
-        close(fd[0]);
-        if (write(fd[1], &c, sizeof c) != (ssize_t)sizeof c) _exit(2);
-        _exit(0);
-    }
-    close(fd[1]);
-    if (pid < 0 || read(fd[0], &r, sizeof r) != (ssize_t)sizeof r) memset(&r, 0, sizeof r);
-    close(fd[0]);
-    if (pid > 0) waitpid(pid, NULL, 0);
+    bench_in_child(measure_child, &a, &r, sizeof r);
     return r;
 }
 
