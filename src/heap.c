@@ -113,19 +113,3 @@ int vrHeap_Pop(vrHeap *h)
 }
 
 double vrHeap_Key(const vrHeap *h, int id) { return h->e[h->pos[id]].key; }
-
-/* the entries under a key of at most `key`: a walk down from the top that
- * stops at any entry above it (everything under that one is above it too) */
-static int at_most_from(const vrHeap *h, int i, double key, int (*fn)(void *ctx, int id), void *ctx)
-{
-    int r;
-    if (i >= h->n || !(h->e[i].key <= key)) return 0;
-    if ((r = fn(ctx, h->e[i].id)) != 0) return r;
-    if ((r = at_most_from(h, 2 * i + 1, key, fn, ctx)) != 0) return r;
-    return at_most_from(h, 2 * i + 2, key, fn, ctx);
-}
-
-int vrHeap_AtMost(const vrHeap *h, double key, int (*fn)(void *ctx, int id), void *ctx)
-{
-    return at_most_from(h, 0, key, fn, ctx);
-}

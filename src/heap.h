@@ -21,9 +21,6 @@ int vrHeap_Contains(const vrHeap *h, int id);
 /* the top id (-1 if empty) and its key */
 int vrHeap_Top(const vrHeap *h, double *key);
 int vrHeap_Pop(vrHeap *h);
-/* fn(ctx, id) for every id under a key <= key, in no set order, until fn
- * returns non-zero; returns that, or 0 */
-int vrHeap_AtMost(const vrHeap *h, double key, int (*fn)(void *ctx, int id), void *ctx);
 /* the key id sits under (only when contained) */
 double vrHeap_Key(const vrHeap *h, int id);
 

@@ -124,7 +124,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     was_overlap = p->overlap;
     p->near = vrPair_Near(o, c.dist);
     p->overlap = c.dist < -VR_PENETRATION_TOL;
-    vrPair_Settle(o, pi, 1, p->near ? t : vrPair_BandKey(o, p, t, &c));
+    vrPair_Settle(o, pi, 1, t);
     if (!p->near) return 0;              /* in the envelope, not touching */
     vrPair_ForEvents(o, p, t, &pa, &pb, &c);   /* the query above had the region: vrPair_EventQuery's */
     if (was_near && !was_overlap && t > t_prev && p->overlap) {

@@ -118,14 +118,13 @@ static void deactivate(vrOwner *o, int pi)
 void vrPair_Place(vrOwner *o, int pi)
 {
     vrPair *p = &o->pair[pi];
-    int every_step = p->inside && !(p->key > p->t_check);   /* not one of vrPair_BandKey's */
     deactivate(o, pi);
     /* a pair in the heap already moves to its new key in one sift */
-    if (o->p.use_heap && p->scheduled && !every_step && p->key < INFINITY
+    if (o->p.use_heap && p->scheduled && !p->inside && p->key < INFINITY
         && vrHeap_Set(&o->heap, pi, p->key, p->order) == 0)
         return;
     vrHeap_Remove(&o->heap, pi);
-    if (o->p.use_heap && p->scheduled && every_step) {
+    if (o->p.use_heap && p->scheduled && p->inside) {
         p->active = o->active.n;
         vrIntList_Push(&o->active, pi);
     }
@@ -195,27 +194,6 @@ int vrOwner_HoldBody(vrOwner *o, int id, vrBody *b)
 }
 
 int vrOwner_BodyCount(const vrOwner *o) { return o->nheld; }
-
-/* A pair in the envelope but farther apart than the contact region (more
- * than 2 g_c) can have no event and no touch until it comes within the
- * region: impacts happen at g_c, touches within the region.  It waits in
- * the heap for the earliest time it could (a key, as for a pair outside),
- * not in the active list, which is looked at every grid point: in a room
- * of bouncing bodies most pairs in the envelope are bodies coming to or
- * leaving a wall through its last centimetre, looked at some twenty times
- * each way (the peers' rooms: 89 % of all looks).  heap = 0 looks at them
- * at every grid point and finds nothing there either, so the bits are
- * the same.  Returns t when the pair is due at every grid point. */
-double vrPair_BandKey(const vrOwner *o, const vrPair *p, double t, const vrContact *c)
-{
-    vrBody *a = o->body[p->a], *b = o->body[p->b];
-    if (!o->p.use_heap || !(c->dist > o->region)) return t;
-    /* ... and until it could leave the envelope, where heap = 0 would find
-     * it outside: until then its state is what heap = 0 finds at every
-     * grid point (in the envelope, not touching, no event) */
-    return vr_min(vrSchedule_Key(a, b, t, c->dist, c->n, o->region, &o->p.flight),
-                  vrSchedule_SpreadKey(a, b, t, o->p.d - c->dist, &o->p.flight));
-}
 
 /* the pair's key after a look that found it dist apart along n; only the
  * heap reads keys, so heap = 0 (the thesis's ablation) does not pay for
@@ -424,11 +402,9 @@ void vrOwner_Stats(const vrOwner *o, vrOwnerStats *s)
     s->response = vrResponder_Stats(o->responder);
 }
 
-/* An island step would find nothing here: no pair in the envelope due at
- * every step (those and the envelope's pairs in the heap whose keys have
- * come are the only ones that can touch; after a look-ahead that found no
- * event every key left is later), none flagged for a look, no body whose
- * pairs are still to be made — vrOwner_Touching looks at no pair. */
+/* An island step would find nothing here: no pair in the envelope (those
+ * are the only ones that can touch), none flagged for a look, no body
+ * whose pairs are still to be made — vrOwner_Touching looks at no pair. */
 int vrOwner_Quiet(const vrOwner *o)
 {
     int i;

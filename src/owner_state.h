@@ -83,7 +83,7 @@ struct vrOwner {
     vrPair *pair;
     int npair, paircap;
     vrHeap heap;
-    vrIntList active;         /* inside pairs due at every grid point (not vrPair_BandKey's), kept out of the heap */
+    vrIntList active;         /* inside pairs: due at every grid point, kept out of the heap */
     vrIntList flagged, due, due_inside;  /* due at a grid point: outside the envelope, inside */
     /* keys of pairs found outside at the grid point being looked at (by the
      * walk or a full look), made once it is known whether an impact before
@@ -135,8 +135,6 @@ void vrPair_Place(vrOwner *o, int pi);               /* into the heap or the act
 void vrPair_UpdateSchedule(vrOwner *o, int pi);      /* unscheduled when both bodies are frozen */
 double vrPair_Key(const vrOwner *o, const vrPair *p, double t, double dist, vec3 n);
 void vrPair_Settle(vrOwner *o, int pi, int inside, double key);   /* after an evaluation */
-/* owner.c: the key of a pair in the envelope, outside the contact region */
-double vrPair_BandKey(const vrOwner *o, const vrPair *p, double t, const vrContact *c);
 
 /* pair_life.c */
 int vrPair_Meet(vrOwner *o, int x, int y);          /* the pair of x and y (made when lazy), -1: none */

@@ -210,27 +210,12 @@ static int touch_of(vrOwner *o, vrPair *p, double t, double h, vrTouches *out)
     return 0;
 }
 
-typedef struct BandLook { vrOwner *o; double t, h; vrTouches *out; } BandLook;
-
-/* a pair of the envelope waiting in the heap (vrPair_BandKey) whose key has
- * come: it may be in the contact region now (heap = 0 looks at it, as at
- * every pair in the envelope); one flagged was looked at already */
-static int band_touch(void *ctx, int pi)
-{
-    BandLook *b = ctx;
-    vrPair *p = &b->o->pair[pi];
-    if (!p->inside || p->flagged || !p->scheduled) return 0;
-    return touch_of(b->o, p, b->t, b->h, b->out);
-}
-
 /* (the order they are found in does not matter: the coordinator sorts
  * them by pair; with the heap the pairs in the envelope are the active
- * list and those of the heap whose keys have come, a pair outside it
- * cannot touch, and one flagged since its last look, in the flagged list,
- * is looked at here too) */
+ * list, a pair outside it cannot touch, and one flagged since its last
+ * look, in the flagged list, is looked at here too) */
 int vrOwner_Touching(vrOwner *o, double t, double h, vrTouches *out)
 {
-    BandLook band;
     int i, n;
     if (vrOwner_MakeFresh(o, t) != 0) return -1;
     n = o->p.use_heap ? o->active.n + o->flagged.n : o->npair;
@@ -240,10 +225,9 @@ int vrOwner_Touching(vrOwner *o, double t, double h, vrTouches *out)
         vrPair *p = &o->pair[pi];
         vec3 dir;
         if (!(p->inside || p->flagged) || !p->scheduled) continue;
-        if (o->p.use_heap && i >= o->active.n && p->active >= 0) continue;   /* listed as active already */
+        if (o->p.use_heap && i >= o->active.n && p->inside) continue;   /* listed as active already */
         if (!p->inside && vrPair_SphereGap(o, p, t, &dir) > o->region) continue;   /* far apart: no query */
         if (touch_of(o, p, t, h, out) != 0) return -1;
     }
-    band.o = o, band.t = t, band.h = h, band.out = out;
-    return o->p.use_heap ? vrHeap_AtMost(&o->heap, t, band_touch, &band) : 0;
+    return 0;
 }

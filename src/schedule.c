@@ -205,58 +205,32 @@ static double speed_cap(const vrBody *b, const vrFlight *f)
     return !moves(b) ? 0 : b->m.over_cap ? INFINITY : f->max_linear;
 }
 
-/* the closing bounds for a pair that has `room` to cover from t: *whole
- * and, for turning bodies, *rate (1 when there is one); -1 when it can
- * never cover it, 0 when it is due at once */
-static int closing_of(vrBody *a, vrBody *b, double t, double room, const vrFlight *f, int turning, vrClosing *whole,
-                      vrClosing *rate)
-{
-    vec3 va, vb;
-    whole->room = room - KEY_MARGIN;
-    whole->cmax = speed_cap(a, f) + speed_cap(b, f);
-    if (whole->room <= 0) return 0;
-    if (whole->cmax <= 0) return -1;
-    vrBody_Velocity(a, t, &va);
-    vrBody_Velocity(b, t, &vb);
-    whole->dv = vec3_sub(vb, va);
-    /* until either body reaches the speed cap the relative acceleration is
-     * exactly a_b - a_a (0 between two free bodies under the same force) */
-    whole->da = vec3_sub(b->m.a, a->m.a);
-    whole->t1 = vr_min(cap_left(a, t), cap_left(b, t));
-    /* turning bodies: the thesis takes (R - r) off the distance at once;
-     * turning at omega also cannot close faster than omega R.  Each bound
-     * holds, so the later time does. */
-    whole->spin = 0;
-    if (!turning || (spin_margin(a) == 0 && spin_margin(b) == 0)) return 1;
-    *rate = *whole;
-    whole->room -= spin_margin(a) + spin_margin(b);
-    rate->spin = spin_rate(a) + spin_rate(b);
-    return 2;
-}
-
 static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f, int turning)
 {
     vrClosing whole, rate;
+    vec3 va, vb;
     double known;
-    int k = closing_of(a, b, t, dist - d, f, turning, &whole, &rate);
-    if (k <= 0) return k == 0 ? t : INFINITY;
-    if (k == 1) return t + key_for(&whole, n, a, b);
+    whole.room = dist - d - KEY_MARGIN;
+    whole.cmax = speed_cap(a, f) + speed_cap(b, f);
+    if (whole.room <= 0) return t;
+    if (whole.cmax <= 0) return INFINITY;
+    vrBody_Velocity(a, t, &va);
+    vrBody_Velocity(b, t, &vb);
+    whole.dv = vec3_sub(vb, va);
+    /* until either body reaches the speed cap the relative acceleration is
+     * exactly a_b - a_a (0 between two free bodies under the same force) */
+    whole.da = vec3_sub(b->m.a, a->m.a);
+    whole.t1 = vr_min(cap_left(a, t), cap_left(b, t));
+    /* turning bodies: the thesis takes (R - r) off the distance at once;
+     * turning at omega also cannot close faster than omega R.  Each bound
+     * holds, so the later time does. */
+    whole.spin = 0;
+    if (!turning || (spin_margin(a) == 0 && spin_margin(b) == 0)) return t + key_for(&whole, n, a, b);
+    rate = whole;
+    whole.room -= spin_margin(a) + spin_margin(b);
+    rate.spin = spin_rate(a) + spin_rate(b);
     known = t + vr_max(key_for(&whole, n, a, b), key_for(&rate, n, a, b));
     return vr_max(known, key_by_vertices(a, b, t, n, d, known));
-}
-
-/* The bounds in any direction hold for a distance that grows as for one
- * that shrinks: the points of the bodies move apart no faster than they
- * could come together, and turning moves a face out by (R - r) at most. */
-double vrSchedule_SpreadKey(vrBody *a, vrBody *b, double t, double room, const vrFlight *f)
-{
-    vrClosing whole, rate;
-    int k = closing_of(a, b, t, room, f, 1, &whole, &rate);
-    double tau;
-    if (k <= 0) return k == 0 ? t : INFINITY;
-    tau = whole.room > 0 ? key_any_direction(&whole, a, b) : 0;
-    if (k == 2) tau = vr_max(tau, key_any_direction(&rate, a, b));
-    return t + tau;
 }
 
 double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)

@@ -45,10 +45,6 @@ long vrSchedule_FirstPointAtOrAfter(const vrGrid *g, double t);
  * (distbound.h).  Each bound holds, so the latest does.  Returns t when
  * the pair is due now, INFINITY when it can never close. */
 double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f);
-/* The earliest time after t at which the pair's distance could have grown
- * by room (> 0): the speed bounds of vrSchedule_Key in any direction, which
- * hold for a growing distance too.  t when room <= 0. */
-double vrSchedule_SpreadKey(vrBody *a, vrBody *b, double t, double room, const vrFlight *f);
 /* The same from the bounding spheres about the centres (a sphere's own),
  * which do not change as the bodies turn: dist is the distance between the
  * spheres and n the direction between the centres. */

@@ -94,55 +94,6 @@ static int test_key_never_overestimates(void)
     return 0;
 }
 
-/* The spread key (vrSchedule_SpreadKey: a pair in the envelope waits in
- * the heap until it could have left it) is a true lower bound too: random
- * pairs as above, placed 0 to d apart along their normal, sampled along the
- * real motion, never more than d apart before their key; and the bound is
- * not empty: a pair flying apart reaches d within three times its key. */
-static int test_spread_key_never_overestimates(void)
-{
-    vrFlight f;
-    int trial, finite = 0, violations = 0, reached = 0;
-    ENSURE(vrPolyhedron_Cube(vec3_make(0.2, 0.2, 0.2), &cube_poly, NULL, 0) == 0);
-    f.max_linear = 6;
-    for (trial = 0; trial < 3000; trial++) {
-        vrBody a, b;
-        vrWalkCache cache;
-        double d = 0.01 + 0.1 * uni(), spin = trial % 2 ? 6 : 60, key, D0;
-        vec3 n0;
-        int k, out = 0;
-        memset(&cache, 0, sizeof cache);
-        f.max_angular = 2 * spin;
-        f.accel = trial % 3 ? vec3_make(0, 0, -9.8) : vec3_zero();
-        make_body(&a, 1, trial % 2, 0);
-        make_body(&b, 2, trial % 5 < 2, trial % 4 == 0);
-        vrBody_Anchor(&a, 0, vec3_zero(), rvec(5), quat_normalize(quat_make(sym(1), sym(1), sym(1), sym(1))),
-                      vec3_scale(rvec(1), 0.0267 * spin / sqrt(3.0)), &f);
-        vrBody_Anchor(&b, 0, vec3_add(vec3_make(1.5, 0, 0), rvec(1)), rvec(5),
-                      quat_normalize(quat_make(sym(1), sym(1), sym(1), sym(1))),
-                      vec3_scale(rvec(1), 0.0267 * spin / sqrt(3.0)), &f);
-        D0 = distance(&a, &b, 0, &cache, &n0);
-        if (!(D0 > 0)) continue;
-        b.m.x0 = vec3_madd(b.m.x0, d * uni() - D0, n0);   /* 0 .. d apart */
-        b.pose_valid = 0;
-        D0 = distance(&a, &b, 0, &cache, &n0);
-        if (!(D0 > 0 && D0 < d)) continue;
-        key = vrSchedule_SpreadKey(&a, &b, 0, d - D0, &f);
-        if (!(key > 0)) { violations++; continue; }
-        if (key < INFINITY) finite++;
-        for (k = 1; k <= 600 && !out; k++) {
-            double t = fmin(3 * key, 1.0) * k / 600.0;
-            if (distance(&a, &b, t, &cache, NULL) > d) out = 1, violations += t < key, reached++;
-        }
-    }
-    printf("    %d finite keys, %d reached d within 3 keys, %d violations\n", finite, reached, violations);
-    vrPolyhedron_Free(cube_poly);
-    ENSURE(finite > 1000);
-    ENSURE(reached > 100);
-    ENSURE(violations == 0);
-    return 0;
-}
-
 /* SPEC 3.2: the grid for free bodies is n = ceil(span * 2 * reach / d) */
 /* Bounding spheres of free bodies under the same force fly straight
  * relative to each other: their key is the first time their gap comes
@@ -529,7 +480,6 @@ static int test_a_push_out_does_not_drive_a_body_into_its_static_support(void)
 static const vrTest tests[] = {
     TEST(test_key_never_overestimates),
     TEST(test_sphere_keys_are_exact_for_free_pairs),
-    TEST(test_spread_key_never_overestimates),
     TEST(test_grid_follows_thesis_rule_without_spin),
     TEST(test_impact_time_is_the_upper_end_after_48_halvings),
     TEST(test_a_bisection_past_an_event_found_stops),
