@@ -58,7 +58,7 @@ static int kick(const vrResponding *o, vrUpdate *up, vrBody *b, const vrEvent *e
     if (vrBody_Immovable(b)) return 0;
     st = vrUpdate_Body(up, b, ev->t);
     if (!st) return -1;
-    if (spin > cap) {
+    if (vrFlight_OverCap(spin, cap)) {
         vec3 clamped = vec3_scale(w, cap / spin);
         v = vec3_madd(v, clamp_lift(ib, ev->n, v, w, clamped), ev->n);
         w = clamped;
