@@ -89,6 +89,13 @@ typedef struct vrFlight {
     double max_linear, max_angular;
 } vrFlight;
 
+/* SPEC 3.2's caps: a speed above its cap by rounding only is at the cap,
+ * neither cut nor counted (stats clamps).  A spin the cap cut, recomputed
+ * from L at the next anchor (omega = I^-1 L), comes out a few ulps over:
+ * counted, one cut was two, and a ball spinning at the cap on a
+ * frictionless floor was "cut" again at one island step in five. */
+static inline int vrFlight_OverCap(double speed, double cap) { return speed > cap * (1 + 1e-12); }
+
 /* motion.c */
 void vrBody_SetMassProperties(vrBody *b, double mass, const mat33 *inertia_unit, double r_in, double r_out);
 /* (re)anchors b at time t with the given state; clamps |v| and |omega|

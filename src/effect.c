@@ -58,7 +58,7 @@ static int kick(const vrResponding *o, vrUpdate *up, vrBody *b, const vrEvent *e
     if (vrBody_Immovable(b)) return 0;
     st = vrUpdate_Body(up, b, ev->t);
     if (!st) return -1;
-    if (spin > cap) {
+    if (vrFlight_OverCap(spin, cap)) {
         vec3 clamped = vec3_scale(w, cap / spin);
         v = vec3_madd(v, clamp_lift(ib, ev->n, v, w, clamped), ev->n);
         w = clamped;
@@ -107,23 +107,36 @@ static int respond_impulse(const vrResponding *o, const vrEvent *ev, vrUpdate *u
  * (all of it scaled, the axis kept): a body turning on a flat side about
  * the vertical brings a vertex down with no speed into the floor at all (a
  * pinched superquadric, supported, lifted 1 um a step gained 0.7 mJ a
- * frame).  A true sphere's spin moves no point of it toward anything. */
-static void pay_from_spin(const vrBody *b, vrBodyState *st, double owed)
+ * frame).  A true sphere's spin brought nothing down, but its energy pays
+ * the lift as well as any; returns what is still owed. */
+static double pay_from_spin(const vrBody *b, vrBodyState *st, double owed)
 {
     vrPose pose;
     mat33 inv;
     double spin_energy;
-    if (!(owed > 0) || b->shape.kind == VR_SHAPE_SPHERE) return;
+    if (!(owed > 0)) return 0;
     pose = vrPose_make(st->x, st->q);
     inv = vrBody_InvInertiaWorld(b, &pose);
     spin_energy = 0.5 * vec3_dot(st->L, mat33_mulv(&inv, st->L));
-    if (!(spin_energy > 0)) return;
+    if (!(spin_energy > 0)) return owed;
     st->L = vec3_scale(st->L, owed < spin_energy ? sqrt(1 - owed / spin_energy) : 0);
+    return owed < spin_energy ? 0 : owed - spin_energy;
+}
+
+/* ...and what the spin could not pay, from the speed left (a ball's spin,
+ * once skipped here, left a pile's ball lifted 0.1 mm with 5.8e-4 J more) */
+static void pay_from_speed(const vrBody *b, vrBodyState *st, double owed)
+{
+    double speed_energy = 0.5 * b->mass * vec3_len2(st->v);
+    if (!(owed > 0) || !(speed_energy > 0)) return;
+    st->v = vec3_scale(st->v, owed < speed_energy ? sqrt(1 - owed / speed_energy) : 0);
 }
 
 /* A push-out that lifts a body against the force adds m a.dx to its
  * energy: taken back from its velocity into the contact (along dir, the
- * way it was pushed), as far as that holds, and the rest from its spin.  A
+ * way it was pushed), as far as that holds, the rest from its spin, then
+ * from its speed left (a body lifted from rest keeps the lift: there is
+ * nothing to pay it from).  A
  * tip or an edge that is not supported sinks g h^2/2 a step h and gains
  * g h of speed; lifted back and that speed kept, the impulses that follow
  * take only what the contact's effective mass carries, and a spinning
@@ -138,7 +151,7 @@ static void pay_for_lift(const vrResponding *o, const vrBody *b, vrBodyState *st
         st->v = vec3_madd(st->v, (left > 0 ? -sqrt(left) : 0) - into, dir);
         lift = left > 0 ? 0 : lift - 0.5 * b->mass * into * into;
     }
-    pay_from_spin(b, st, lift);
+    pay_from_speed(b, st, pay_from_spin(b, st, lift));
 }
 
 /* Interpenetrating bodies are pushed apart along the normal out of the

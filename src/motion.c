@@ -86,7 +86,7 @@ static double cap_time(vec3 v0, vec3 a, double vmax)
  * hence the margin; every holder decides alike from the anchor alone. */
 static void set_cap(vrMotion *m, double max_linear)
 {
-    m->over_cap = vec3_len(m->v0) > max_linear * (1 + 1e-12);
+    m->over_cap = vrFlight_OverCap(vec3_len(m->v0), max_linear);
     m->tcap = m->over_cap ? INFINITY : cap_time(m->v0, m->a, max_linear);
 }
 
@@ -236,13 +236,13 @@ int vrBody_Anchor(vrBody *b, double t, vec3 x, vec3 v, quat q, vec3 L, const vrF
         L = vec3_zero();
     }
     s = vec3_len(v);
-    if (s > f->max_linear) v = vec3_scale(v, f->max_linear / s), clamps++;
+    if (vrFlight_OverCap(s, f->max_linear)) v = vec3_scale(v, f->max_linear / s), clamps++;
     m->v0 = v;
     m->L = L;
     if (!b->is_static && vec3_len2(L) > 0) {
         mat33 R = mat33_from_quat(m->q0);
         double w = b->kinematic ? vec3_len(L) : vec3_len(omega_at(b, &R));
-        if (w > f->max_angular) m->L = vec3_scale(L, f->max_angular / w), clamps++;
+        if (vrFlight_OverCap(w, f->max_angular)) m->L = vec3_scale(L, f->max_angular / w), clamps++;
     }
     m->a = flight_accel(b, f->accel);
     set_cap(m, f->max_linear);

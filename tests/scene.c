@@ -34,6 +34,12 @@ void vrScene_Set(vrWorld *w, void (*edit)(vrSettings *))
 
 void vrScene_HeapOff(vrSettings *s) { s->heap = 0; }
 
+void vrScene_ShellCaps(vrSettings *s)
+{
+    s->max_linear = 8;
+    s->max_angular = 4;
+}
+
 /* ---- objects ------------------------------------------------------------------ */
 
 vrObjectId vrScene_Add(vrWorld *w, const char *name, vrObjectType type, const vrObjectDef *d)

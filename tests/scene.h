@@ -22,6 +22,8 @@ vrWorld *vrScene_World(double time_step, double d, double g);
 /* the world's settings changed by edit */
 void vrScene_Set(vrWorld *w, void (*edit)(vrSettings *));
 void vrScene_HeapOff(vrSettings *s);
+/* the shell's speed caps (SPEC 3.2, the thesis's): max_linear 8 m/s, max_angular 4 rad/s */
+void vrScene_ShellCaps(vrSettings *s);
 
 /* ---- objects ------------------------------------------------------------------ */
 

@@ -143,13 +143,6 @@ static int test_a_box_shoved_along_by_a_heavy_one_keeps_momentum(void)
     return 0;
 }
 
-/* the shell's default caps (SPEC 3.2) */
-static void shell_caps(vrSettings *s)
-{
-    s->max_linear = 8;
-    s->max_angular = 4;
-}
-
 /* A 1 kg ball moving at the cap (8 m/s, no force) strikes the end of a
  * still 1 kg rod 1 m long: the rod is knocked away spinning past 4 rad/s,
  * and the clamp cuts its spin.  The clamp once gave the rod the normal
@@ -162,7 +155,7 @@ static int test_a_ball_at_the_cap_on_a_rods_end_gains_no_energy_from_the_clamp(v
     vrWorld *w = vrScene_World(0.01, 0.01, 0);
     double e0 = 0.5 * 1 * 8 * 8, worst = 0;
     int f;
-    vrScene_Set(w, shell_caps);
+    vrScene_Set(w, vrScene_ShellCaps);
     vrScene_Box(w, "rod", vec3_make(0.5, 0.05, 0.05), vec3_make(0, 0, 1), 1, 0.5);
     vrScene_Sphere(w, "ball", 0.1, vec3_make(0.4, 0, 1.5), vec3_make(0, 0, -8), 1, 0.5);
     ENSURE(fabs(vrScene_Stats(w).energy - e0) < 1e-12 * e0);

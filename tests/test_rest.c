@@ -145,8 +145,6 @@ static int test_ball_on_a_knocked_block_wakes_and_falls(void)
  * edge later, where it would lose its support and chatter.  (With only the
  * centre's normal velocity taken out it kept 3e-3 rad/s of rocking and
  * needed 47 more impulses within 20 s.) */
-static void shell_caps(vrSettings *s) { s->max_linear = 8; s->max_angular = 4; }
-
 static int test_settled_box_keeps_no_rocking_spin(void)
 {
     vrWorld *w = vrScene_World(0.01, 0.01, 9.8);
@@ -159,7 +157,7 @@ static int test_settled_box_keeps_no_rocking_spin(void)
     vrScene_Edit(w, b, vrScene_SetRotation, rot);
     vrScene_Edit(w, b, vrScene_SetSpin, spin);
     vrScene_Edit(w, b, vrScene_SetVelocity, v);
-    vrScene_Set(w, shell_caps);
+    vrScene_Set(w, vrScene_ShellCaps);
     ENSURE(vrScene_Step(w, 100) == 0);
     ENSURE(vrScene_State(w, b).state == VR_STATE_SUPPORTED);
     settled = vrScene_Stats(w).collisions;
