@@ -177,16 +177,16 @@ static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact
     return 0;
 }
 
-/* the bodies' kinetic energy (inertia from the inverse given) */
-static double kinetic(const vrIslandBody *b, int n)
+/* the bodies' kinetic energy; inertia[i] is the inverse of body i's
+ * inv_inertia, found once a solve (the energy checks measure it four
+ * times, and the inverse was a tenth of their cost) */
+static double kinetic(const vrIslandBody *b, const mat33 *inertia, int n)
 {
     double e = 0;
     int i;
     for (i = 0; i < n; i++) {
-        mat33 inertia;
         if (!b[i].dynamic) continue;
-        inertia = mat33_inverse(&b[i].inv_inertia);
-        e += 0.5 / b[i].inv_mass * vec3_len2(b[i].v) + 0.5 * vec3_dot(b[i].w, mat33_mulv(&inertia, b[i].w));
+        e += 0.5 / b[i].inv_mass * vec3_len2(b[i].v) + 0.5 * vec3_dot(b[i].w, mat33_mulv(&inertia[i], b[i].w));
     }
     return e;
 }
@@ -194,9 +194,9 @@ static double kinetic(const vrIslandBody *b, int n)
 /* kinetic energy less the work the force paid in does over the step's
  * flight at the velocities as they are: the step's energy but for the
  * potential energy at its start, which no impulse changes */
-static double step_energy(const vrIslandBody *b, int n)
+static double step_energy(const vrIslandBody *b, const mat33 *inertia, int n)
 {
-    double e = kinetic(b, n);
+    double e = kinetic(b, inertia, n);
     int i;
     for (i = 0; i < n; i++)
         if (b[i].dynamic) e -= vec3_dot(b[i].paid, b[i].v) / b[i].inv_mass;
@@ -213,15 +213,16 @@ static double step_energy(const vrIslandBody *b, int n)
  * settling pile gain 1e-12 J or less, rounding, and scaled every one
  * pulled the pile's settling along another path.  Without a force there
  * is nothing to scale back to; the kinetic check's tries hold there. */
-static void pay_back(vrIslandBody *body, const vrIslandBody *before, int nbody, vrIslandContact *c, int ncontact)
+static void pay_back(vrIslandBody *body, const vrIslandBody *before, const mat33 *inertia, int nbody,
+                     vrIslandContact *c, int ncontact)
 {
     double C = 0, e0, R, s;
     int i, k;
     for (i = 0; i < nbody; i++)
         if (body[i].dynamic) C += 0.5 * vec3_len2(body[i].paid) / body[i].inv_mass;
     if (!(C > 0)) return;
-    e0 = step_energy(before, nbody) + C;            /* the kinetic energy before the force */
-    R = step_energy(body, nbody) - e0;
+    e0 = step_energy(before, inertia, nbody) + C;            /* the kinetic energy before the force */
+    R = step_energy(body, inertia, nbody) - e0;
     if (!(R > 1e-9 * fmin(1.0, e0 + C))) return;
     s = C / (C + R);
     for (i = 0; i < nbody; i++) {
@@ -246,15 +247,22 @@ static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int nc
                        int stall, vrIslandStats *st)
 {
     vrIslandBody *before;
+    mat33 *inertia;
     double e0;
     int i, r, try;
     vrIslandStats dummy;
     if (!st) st = &dummy;
     if (nbody <= 0 || ncontact <= 0) return solve(body, nbody, c, ncontact, sweeps, tol, 0, stall, st);
     before = malloc((size_t)nbody * sizeof *before);
-    if (!before) return -1;
+    inertia = malloc((size_t)nbody * sizeof *inertia);
+    if (!before || !inertia) {
+        free(before);
+        free(inertia);
+        return -1;
+    }
     memcpy(before, body, (size_t)nbody * sizeof *before);
-    e0 = kinetic(body, nbody);
+    for (i = 0; i < nbody; i++) inertia[i] = body[i].dynamic ? mat33_inverse(&body[i].inv_inertia) : mat33_zero();
+    e0 = kinetic(body, inertia, nbody);
     /* The exact solution with floors <= 0 never gains energy (the
      * impulses' work at the velocities after is lambda floor + f.u <= 0);
      * a solve left short of it with friction may, and bounces may, and
@@ -264,13 +272,14 @@ static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int nc
         if (try == 2) no_bounces(c, ncontact);
         r = solve(body, nbody, c, ncontact, sweeps, tol, try > 0, stall, st);
         st->frictionless = try > 0, st->bounceless = try > 1;
-        if (r != 0 || try == 2 || kinetic(body, nbody) <= e0 * (1 + 1e-12) + 1e-300) break;
+        if (r != 0 || try == 2 || kinetic(body, inertia, nbody) <= e0 * (1 + 1e-12) + 1e-300) break;
         memcpy(body, before, (size_t)nbody * sizeof *before);
     }
     if (st->frictionless)
         for (i = 0; i < ncontact; i++) c[i].friction = vec3_zero(), c[i].twist = 0;
-    if (r == 0) pay_back(body, before, nbody, c, ncontact);
+    if (r == 0) pay_back(body, before, inertia, nbody, c, ncontact);
     free(before);
+    free(inertia);
     return r;
 }
 
