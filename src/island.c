@@ -3,10 +3,12 @@
  * ground-up pass, and the energy check.
  *   sweep, residual        every contact once, in order; what they leave
  *   levels, shock_pass     the ground-up pass with lower bodies held still
+ *   stalled                a try's sweeps judged not to reach tol by the cap
  *   free_solve, solve      a try's state; a try
  *   kinetic, step_energy   the energy checks' measures
  *   pay_back               impulses scaled back until the step gains no energy
- *   vrIsland_Solve         the tries the energy check asks for
+ *   solve_tries            the tries the energy check asks for
+ *   vrIsland_Solve, vrIsland_SolveStep
  */
 #include <stdlib.h>
 #include <string.h>
@@ -90,6 +92,24 @@ static void shock_pass(vrIslandSolve *s, int sweeps, double tol)
      * nothing cost a pile 2 % of its instructions. */
 }
 
+/* Sweeps that will not reach tol by the cap: from sweep STALL_FIRST on,
+ * the change, falling as fast as over the last STALL_SPAN sweeps, would
+ * still be above tol at the cap's last sweep (or it did not fall).  A
+ * settling pile's big islands sit at ~1e-5 m/s from sweep to sweep up to
+ * the cap, and those sweeps were half of its solve's contact steps.
+ * change[] is a ring of the last STALL_SPAN sweeps' changes. */
+#define STALL_SPAN 4
+#define STALL_FIRST 8
+
+static int stalled(double *change, int k, double most, int sweeps, double tol)
+{
+    double was = change[k % STALL_SPAN];
+    change[k % STALL_SPAN] = most;
+    if (k < STALL_FIRST || !(was > 0)) return 0;
+    if (most >= was) return 1;
+    return most * pow(most / was, (double)(sweeps - 1 - k) / STALL_SPAN) > tol;
+}
+
 static int valid(const vrIslandBody *body, int nbody, const vrIslandContact *c, int ncontact)
 {
     int i, k;
@@ -114,10 +134,11 @@ static void free_solve(vrIslandSolve *s)
 }
 
 static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
-                 int frictionless, vrIslandStats *st)
+                 int frictionless, int stall, vrIslandStats *st)
 {
     vrIslandSolve s;
-    int ci, i, k;
+    double change[STALL_SPAN] = {0};
+    int ci, i, k, grounded;
     st->sweeps = st->shock = st->frictionless = st->bounceless = 0;
     st->residual = 0;
     if (!valid(body, nbody, c, ncontact)) return -1;
@@ -141,11 +162,13 @@ static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact
         vrSolve_Hold(&s, ci, 0, 0);
         if (c[ci].warm && !frictionless) vrSolve_ApplyImpulses(&s, ci);
     }
+    grounded = levels(body, nbody, c, ncontact);
     for (k = 0; k < sweeps; k++) {
+        double most = sweep(&s);
         st->sweeps++;
-        if (sweep(&s) <= tol) break;
+        if (most <= tol || (stall && grounded && stalled(change, k, most, sweeps, tol))) break;
     }
-    if (residual(&s) > tol && levels(body, nbody, c, ncontact)) {
+    if (grounded && residual(&s) > tol) {
         shock_pass(&s, sweeps, tol);
         st->shock = 1;
     }
@@ -154,16 +177,16 @@ static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact
     return 0;
 }
 
-/* the bodies' kinetic energy (inertia from the inverse given) */
-static double kinetic(const vrIslandBody *b, int n)
+/* the bodies' kinetic energy; inertia[i] is the inverse of body i's
+ * inv_inertia, found once a solve (the energy checks measure it four
+ * times, and the inverse was a tenth of their cost) */
+static double kinetic(const vrIslandBody *b, const mat33 *inertia, int n)
 {
     double e = 0;
     int i;
     for (i = 0; i < n; i++) {
-        mat33 inertia;
         if (!b[i].dynamic) continue;
-        inertia = mat33_inverse(&b[i].inv_inertia);
-        e += 0.5 / b[i].inv_mass * vec3_len2(b[i].v) + 0.5 * vec3_dot(b[i].w, mat33_mulv(&inertia, b[i].w));
+        e += 0.5 / b[i].inv_mass * vec3_len2(b[i].v) + 0.5 * vec3_dot(b[i].w, mat33_mulv(&inertia[i], b[i].w));
     }
     return e;
 }
@@ -171,9 +194,9 @@ static double kinetic(const vrIslandBody *b, int n)
 /* kinetic energy less the work the force paid in does over the step's
  * flight at the velocities as they are: the step's energy but for the
  * potential energy at its start, which no impulse changes */
-static double step_energy(const vrIslandBody *b, int n)
+static double step_energy(const vrIslandBody *b, const mat33 *inertia, int n)
 {
-    double e = kinetic(b, n);
+    double e = kinetic(b, inertia, n);
     int i;
     for (i = 0; i < n; i++)
         if (b[i].dynamic) e -= vec3_dot(b[i].paid, b[i].v) / b[i].inv_mass;
@@ -190,15 +213,16 @@ static double step_energy(const vrIslandBody *b, int n)
  * settling pile gain 1e-12 J or less, rounding, and scaled every one
  * pulled the pile's settling along another path.  Without a force there
  * is nothing to scale back to; the kinetic check's tries hold there. */
-static void pay_back(vrIslandBody *body, const vrIslandBody *before, int nbody, vrIslandContact *c, int ncontact)
+static void pay_back(vrIslandBody *body, const vrIslandBody *before, const mat33 *inertia, int nbody,
+                     vrIslandContact *c, int ncontact)
 {
     double C = 0, e0, R, s;
     int i, k;
     for (i = 0; i < nbody; i++)
         if (body[i].dynamic) C += 0.5 * vec3_len2(body[i].paid) / body[i].inv_mass;
     if (!(C > 0)) return;
-    e0 = step_energy(before, nbody) + C;            /* the kinetic energy before the force */
-    R = step_energy(body, nbody) - e0;
+    e0 = step_energy(before, inertia, nbody) + C;            /* the kinetic energy before the force */
+    R = step_energy(body, inertia, nbody) - e0;
     if (!(R > 1e-9 * fmin(1.0, e0 + C))) return;
     s = C / (C + R);
     for (i = 0; i < nbody; i++) {
@@ -219,19 +243,26 @@ static void no_bounces(vrIslandContact *c, int ncontact)
         for (k = 0; k < c[i].npoints; k++) c[i].floor[k] = vr_min(0, c[i].floor[k]);
 }
 
-int vrIsland_Solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
-                   vrIslandStats *st)
+static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
+                       int stall, vrIslandStats *st)
 {
     vrIslandBody *before;
+    mat33 *inertia;
     double e0;
     int i, r, try;
     vrIslandStats dummy;
     if (!st) st = &dummy;
-    if (nbody <= 0 || ncontact <= 0) return solve(body, nbody, c, ncontact, sweeps, tol, 0, st);
+    if (nbody <= 0 || ncontact <= 0) return solve(body, nbody, c, ncontact, sweeps, tol, 0, stall, st);
     before = malloc((size_t)nbody * sizeof *before);
-    if (!before) return -1;
+    inertia = malloc((size_t)nbody * sizeof *inertia);
+    if (!before || !inertia) {
+        free(before);
+        free(inertia);
+        return -1;
+    }
     memcpy(before, body, (size_t)nbody * sizeof *before);
-    e0 = kinetic(body, nbody);
+    for (i = 0; i < nbody; i++) inertia[i] = body[i].dynamic ? mat33_inverse(&body[i].inv_inertia) : mat33_zero();
+    e0 = kinetic(body, inertia, nbody);
     /* The exact solution with floors <= 0 never gains energy (the
      * impulses' work at the velocities after is lambda floor + f.u <= 0);
      * a solve left short of it with friction may, and bounces may, and
@@ -239,14 +270,27 @@ int vrIsland_Solve(vrIslandBody *body, int nbody, vrIslandContact *c, int nconta
      * too, which never gains (each step then lowers the energy or keeps it). */
     for (try = 0; try < 3; try++) {
         if (try == 2) no_bounces(c, ncontact);
-        r = solve(body, nbody, c, ncontact, sweeps, tol, try > 0, st);
+        r = solve(body, nbody, c, ncontact, sweeps, tol, try > 0, stall, st);
         st->frictionless = try > 0, st->bounceless = try > 1;
-        if (r != 0 || try == 2 || kinetic(body, nbody) <= e0 * (1 + 1e-12) + 1e-300) break;
+        if (r != 0 || try == 2 || kinetic(body, inertia, nbody) <= e0 * (1 + 1e-12) + 1e-300) break;
         memcpy(body, before, (size_t)nbody * sizeof *before);
     }
     if (st->frictionless)
         for (i = 0; i < ncontact; i++) c[i].friction = vec3_zero(), c[i].twist = 0;
-    if (r == 0) pay_back(body, before, nbody, c, ncontact);
+    if (r == 0) pay_back(body, before, inertia, nbody, c, ncontact);
     free(before);
+    free(inertia);
     return r;
+}
+
+int vrIsland_Solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
+                   vrIslandStats *st)
+{
+    return solve_tries(body, nbody, c, ncontact, sweeps, tol, 0, st);
+}
+
+int vrIsland_SolveStep(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
+                       vrIslandStats *st)
+{
+    return solve_tries(body, nbody, c, ncontact, sweeps, tol, 1, st);
 }

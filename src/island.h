@@ -77,5 +77,13 @@ typedef struct vrIslandStats {
  * more than `tol` m/s of relative velocity.  0, or -1 on a bad argument. */
 int vrIsland_Solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
                    vrIslandStats *st);
+/* vrIsland_Solve for an island step, whose solves are warm started and
+ * whose cap is small: an island on a static body whose sweeps will not
+ * reach tol by the cap (judged from its eighth sweep on, by the rate its
+ * change falls at) goes to the ground-up pass then, not at the cap.  The
+ * next step goes on from its impulses; a generous cap's last sweeps, which
+ * still carry a tall stack's weight down (vrIsland_Solve), may be cut. */
+int vrIsland_SolveStep(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
+                       vrIslandStats *st);
 
 #endif

@@ -54,11 +54,14 @@ static void substitute(double L[VR_LCP_MAX][VR_LCP_MAX], double *b, int m)
 }
 
 /* the basis's factor: the one kept when it is that basis's (A unchanged
- * since: the caller's promise), else made and kept */
-static int factor(const double *A, int n, const int *idx, int m, unsigned basis, double scale, vrLcpFactor *f)
+ * since: the caller's promise), else made and kept, regularised by A's
+ * largest diagonal (found only then: nearly every call keeps its factor) */
+static int factor(const double *A, int n, const int *idx, int m, unsigned basis, vrLcpFactor *f)
 {
+    double scale = 0;
     int i, j;
     if (f->valid && f->basis == basis) return 0;
+    for (i = 0; i < n; i++) scale = fmax(scale, A[i * n + i]);
     for (i = 0; i < m; i++) {
         for (j = 0; j < m; j++) f->L[i][j] = A[idx[i] * n + idx[j]];
         f->L[i][i] += REGULARISE * scale;
@@ -70,8 +73,7 @@ static int factor(const double *A, int n, const int *idx, int m, unsigned basis,
 int vrLcp_SolveWith(const double *A, const double *q, int n, double *x, vrLcpFactor *f)
 {
     int in[VR_LCP_MAX], idx[VR_LCP_MAX], pivot, i, j;
-    double scale = 0;
-    for (i = 0; i < n; i++) scale = fmax(scale, A[i * n + i]), in[i] = x[i] > 0;
+    for (i = 0; i < n; i++) in[i] = x[i] > 0;
     for (pivot = 0; pivot < PIVOTS_MAX; pivot++) {
         double y[VR_LCP_MAX];
         unsigned basis = 0;
@@ -79,7 +81,7 @@ int vrLcp_SolveWith(const double *A, const double *q, int n, double *x, vrLcpFac
         for (i = 0; i < n; i++)
             if (in[i]) idx[m++] = i, basis |= 1u << i;
         for (i = 0; i < m; i++) y[i] = -q[idx[i]];
-        if (m && factor(A, n, idx, m, basis, scale, f) != 0) return -1;
+        if (m && factor(A, n, idx, m, basis, f) != 0) return -1;
         if (m) substitute(f->L, y, m);
         for (i = 0; i < n; i++) x[i] = 0;
         for (i = 0; i < m; i++) x[idx[i]] = y[i];

@@ -2,8 +2,9 @@
  * stopped flat on the floor, a stack whose weight reaches the floor,
  * Coulomb's round cone, sticking below atan mu and sliding at
  * g (sin - mu cos) above it, a sliding ball ending up rolling at 5/7 of its
- * speed, a heavy box on a light ball, kinetic energy never gained, and a
- * step's energy never gained when its sweeps are cut short. */
+ * speed, a heavy box on a light ball, kinetic energy never gained, a
+ * step's energy never gained when its sweeps are cut short, and the island
+ * step's solve leaving stalled sweeps early. */
 #include <stdlib.h>
 #include "island.h"
 #include "test.h"
@@ -320,6 +321,55 @@ static int test_a_stack_cut_short_gains_no_energy_in_its_step(void)
     return 0;
 }
 
+/* n boxes stacked on the floor, cold, the step's gravity paid in */
+static void cold_stack(int n, vrIslandBody *b, vrIslandContact *c)
+{
+    vec3 half = vec3_make(0.25, 0.25, 0.25), gh = vec3_make(0, 0, -G * H);
+    int i;
+    b[0] = floor_body();
+    for (i = 0; i < n; i++) {
+        b[i + 1] = box_body(1, half, vec3_make(0.01 * i, 0, 0.25 + 0.5 * i));
+        b[i + 1].v = b[i + 1].paid = gh;
+        c[i] = face_contact(i, i + 1, b[i + 1].x, half, 0.6);
+    }
+}
+
+/* The island step's solve (vrIsland_SolveStep) leaves sweeps that will not
+ * reach the tolerance by the cap for the ground-up pass early: a cold
+ * stack of ten at the world's cap of 32 and 1e-8 m/s, where the full
+ * solve sweeps to the cap, stops as soon as it is judged (sweep 9) and
+ * still ends with nothing approaching, nothing thrown up and no energy
+ * gained in its step; while a box landing sliding and turning, whose
+ * sweeps reach the tolerance in ten, is solved to the same bits by both. */
+static int test_a_stalled_solve_goes_to_the_ground_up_pass_early(void)
+{
+    enum { N = 10, CAP = 32 };
+    vec3 half = vec3_make(0.5, 0.3, 0.2);
+    vrIslandBody b[N + 1], full[N + 1], box[2] = {floor_body(), box_body(2, half, vec3_make(0.1, 0.2, 0.2))}, box_step[2];
+    vrIslandContact c[N], cf[N], cb = face_contact(0, 1, box[1].x, half, 0.5), cb_step;
+    vrIslandStats st, stf, stb, stb_step;
+    int i;
+    cold_stack(N, b, c);
+    memcpy(full, b, sizeof b), memcpy(cf, c, sizeof c);
+    ENSURE(vrIsland_SolveStep(b, N + 1, c, N, CAP, 1e-8, &st) == 0);
+    ENSURE(vrIsland_Solve(full, N + 1, cf, N, CAP, 1e-8, &stf) == 0);
+    printf("    stack of 10: %d sweeps (full solve %d), shock pass %d, residual %.3g m/s, step's energy %.3g J\n",
+           st.sweeps, stf.sweeps, st.shock, st.residual, step_energy(b, N + 1));
+    ENSURE(stf.sweeps == CAP && st.sweeps == 9 && st.shock);
+    ENSURE(st.residual <= 1e-8);
+    for (i = 1; i <= N; i++) ENSURE_MSG(b[i].v.z < 1e-6, "box %d thrown up at %g m/s", i, b[i].v.z);
+    ENSURE(step_energy(b, N + 1) <= 1e-15);
+    box[1].paid = vec3_make(0, 0, -G * H);
+    box[1].v = vec3_make(0.05, 0.02, -G * H), box[1].w = vec3_make(0.3, 0, 0);
+    memcpy(box_step, box, sizeof box), cb_step = cb;
+    ENSURE(vrIsland_Solve(box, 2, &cb, 1, CAP, 1e-8, &stb) == 0);
+    ENSURE(vrIsland_SolveStep(box_step, 2, &cb_step, 1, CAP, 1e-8, &stb_step) == 0);
+    printf("    box landing: %d sweeps, %d in the step's solve\n", stb.sweeps, stb_step.sweeps);
+    ENSURE(stb.sweeps > 9 && stb.sweeps < CAP && stb_step.sweeps == stb.sweeps);
+    ENSURE(memcmp(box, box_step, sizeof box) == 0 && memcmp(&cb, &cb_step, sizeof cb) == 0);
+    return 0;
+}
+
 static const vrTest tests[] = {
     TEST(test_box_landing_flat_stops_with_its_momentum),
     TEST(test_stack_weight_reaches_the_floor),
@@ -329,6 +379,7 @@ static const vrTest tests[] = {
     TEST(test_heavy_box_on_light_ball_stops),
     TEST(test_solve_never_adds_kinetic_energy),
     TEST(test_a_stack_cut_short_gains_no_energy_in_its_step),
+    TEST(test_a_stalled_solve_goes_to_the_ground_up_pass_early),
 };
 
 const vrTestSuite vrSuite_Island = {"island", tests, TEST_COUNT(tests), NULL, NULL, 0};
