@@ -99,7 +99,7 @@ const Command sh_commands[] = {
     SETTING("max_frames", "max_frames = n", "a script's start stops after n frames", "600", G_EXT, K_INT, R_CLOSED, 0, 1e9, max_frames),
     SETTING("heap", "heap = 0|1", "1: the scheduling heap; 0: every pair at every internal step", "1", G_EXT, K_INT, R_CLOSED, 0, 1, heap),
     {"broadphase", "broadphase = sweep|tree", "how the pairs whose boxes meet are found: sorted sweep or box trees",
-     "sweep", G_EXT, F_ASSIGN, K_CHOICE, R_ANY, 0, 0, 0, broadphases, T_SETTINGS, offsetof(vrSettings, broadphase), 0,
+     "tree", G_EXT, F_ASSIGN, K_CHOICE, R_ANY, 0, 0, 0, broadphases, T_SETTINGS, offsetof(vrSettings, broadphase), 0,
      run_setting},
     SETTING("gps", "gps = n", "worker processes (0: serial)", "0", G_EXT, K_INT, R_CLOSED, 0, 64, gps),
     {"distribution", "distribution = round_robin|improved", "how pairs are dealt to the workers", "round_robin", G_EXT,

@@ -39,7 +39,7 @@ vrSettings vrSettings_Default(void)
     s.max_angular = 4.0;
     s.force_dir[2] = -1.0;
     s.heap = 1;
-    s.broadphase = VR_BROADPHASE_SWEEP;
+    s.broadphase = VR_BROADPHASE_TREE;
     s.max_frames = 600;
     s.distribution = VR_DIST_ROUND_ROBIN;
     strcpy(s.lcm_url, "udpm://239.255.76.67:7667?ttl=0");
