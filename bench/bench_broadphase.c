@@ -10,8 +10,9 @@
  * even ones), RUNS rounds, and the figure is each one's median frames per
  * second from the `sim_ms` between two stats lines (the simulation alone:
  * not the build, not the first frame's pair making).  The two runs of a
- * scene must end with the same counts (collisions, checks, resting): the
- * same run, only the structure differs.
+ * scene must end with the same collisions and resting objects: the same
+ * run, only the structure differs (the checks, printed for both, may
+ * differ by about 0.1 %: README, Status).
  *   random2000/5000/10000   SPEC 10's room (bench_scale.c): no gravity, no
  *                           caps, 35, 47.6 and 60 m rooms (one density)
  *   peer1000                ../shared/bench/peer-random-1000.cmd (the
@@ -107,14 +108,17 @@ static void scene(const char *name, const char *script)
             end[k] = b;
         }
     m[0] = median(f[0], RUNS), m[1] = median(f[1], RUNS);
-    if (end[0].collisions != end[1].collisions || end[0].checks != end[1].checks || end[0].resting != end[1].resting) {
-        printf("  %-12s COUNTS DIFFER: sweep %.0f collisions %.0f checks, tree %.0f, %.0f\n", name, end[0].collisions,
-               end[0].checks, end[1].collisions, end[1].checks);
+    /* checks (distance queries) may differ a little: the pairs are met,
+     * so their records made and looked at, in another order */
+    if (end[0].collisions != end[1].collisions || end[0].resting != end[1].resting) {
+        printf("  %-12s COUNTS DIFFER: sweep %.0f collisions %.0f resting, tree %.0f, %.0f\n", name, end[0].collisions,
+               end[0].resting, end[1].collisions, end[1].resting);
         failures++;
     }
-    printf("  %-12s %10.1f %10.1f %8.2f %12.0f %12.0f\n", name, m[0], m[1], m[0] > 0 ? m[1] / m[0] : 0,
-           end[0].collisions, end[0].checks);
-    printf("csv,broadphase,%s,%.2f,%.2f,%.0f,%.0f\n", name, m[0], m[1], end[0].collisions, end[0].checks);
+    printf("  %-12s %10.1f %10.1f %8.2f %12.0f %12.0f %12.0f\n", name, m[0], m[1], m[0] > 0 ? m[1] / m[0] : 0,
+           end[0].collisions, end[0].checks, end[1].checks);
+    printf("csv,broadphase,%s,%.2f,%.2f,%.0f,%.0f,%.0f\n", name, m[0], m[1], end[0].collisions, end[0].checks,
+           end[1].checks);
     fflush(stdout);
 }
 
@@ -169,7 +173,8 @@ int main(int argc, char **argv)
     }
     if (system("command -v taskset >/dev/null 2>&1") == 0) snprintf(pin, sizeof pin, "taskset -c %s ", cpu && *cpu ? cpu : "0");
     printf("sweep against tree: median frames/s of %d interleaved runs each (%s)\n", RUNS, *pin ? pin : "unpinned");
-    printf("  %-12s %10s %10s %8s %12s %12s\n", "scene", "sweep fps", "tree fps", "tree/sw", "collisions", "checks");
+    printf("  %-12s %10s %10s %8s %12s %12s %12s\n", "scene", "sweep fps", "tree fps", "tree/sw", "collisions",
+           "sweep checks", "tree checks");
     if (wanted(argc, argv, "random2000")) room_scene("random2000", 2000, 35, 20);
     if (wanted(argc, argv, "random5000")) room_scene("random5000", 5000, 47.6, 20);
     if (wanted(argc, argv, "random10000")) room_scene("random10000", 10000, 60, 20);
