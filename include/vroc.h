@@ -86,6 +86,8 @@ vrObjectDef vrObjectDef_Default(vrObjectType type);
 
 /* ---- settings (thesis table A.5, SPEC 1.2) ----------------------------- */
 typedef enum vrDistribution { VR_DIST_ROUND_ROBIN, VR_DIST_IMPROVED } vrDistribution;
+/* how the pairs whose boxes meet are found: the same pairs (and bits) either way */
+typedef enum vrBroadphaseKind { VR_BROADPHASE_SWEEP, VR_BROADPHASE_TREE } vrBroadphaseKind;
 
 typedef struct vrSettings {
     double time_step;         /* >= 0, 0.1 (0 halts time) */
@@ -96,6 +98,7 @@ typedef struct vrSettings {
     double force_dir[3];      /* != 0, (0,0,-1) */
     double force_mag;         /* >= 0, 0 (no global force until `force` or `gravity`) */
     int heap;                 /* 1: scheduling heap; 0: every pair every internal step */
+    vrBroadphaseKind broadphase; /* sorted sweep or box trees */
     long max_frames;          /* batch `start` limit, 600 */
     unsigned long long seed;  /* `random` stream seed, 0 */
     double room;              /* >= 0, 0 = no room for `random` */

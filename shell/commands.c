@@ -15,6 +15,7 @@
 /* the ranges are the library's sane limits (vroc.h VR_*_MIN/MAX, SPEC 11) */
 
 static const char *const distributions[] = {"round_robin", "improved", NULL};
+static const char *const broadphases[] = {"sweep", "tree", NULL};   /* vrBroadphaseKind's order */
 static const char *const frame_formats[] = {"ppm", "png", NULL};
 static const char *const window_modes[] = {"mono", "side", "anaglyph", NULL};
 
@@ -97,6 +98,9 @@ const Command sh_commands[] = {
      K_CHOICE, R_ANY, 0, 0, 0, frame_formats, T_NONE, 0, 0, run_frames_format},
     SETTING("max_frames", "max_frames = n", "a script's start stops after n frames", "600", G_EXT, K_INT, R_CLOSED, 0, 1e9, max_frames),
     SETTING("heap", "heap = 0|1", "1: the scheduling heap; 0: every pair at every internal step", "1", G_EXT, K_INT, R_CLOSED, 0, 1, heap),
+    {"broadphase", "broadphase = sweep|tree", "how the pairs whose boxes meet are found: sorted sweep or box trees",
+     "tree", G_EXT, F_ASSIGN, K_CHOICE, R_ANY, 0, 0, 0, broadphases, T_SETTINGS, offsetof(vrSettings, broadphase), 0,
+     run_setting},
     SETTING("gps", "gps = n", "worker processes (0: serial)", "0", G_EXT, K_INT, R_CLOSED, 0, 64, gps),
     {"distribution", "distribution = round_robin|improved", "how pairs are dealt to the workers", "round_robin", G_EXT,
      F_ASSIGN, K_CHOICE, R_ANY, 0, 0, 0, distributions, T_SETTINGS, offsetof(vrSettings, distribution), 0, run_setting},

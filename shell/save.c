@@ -61,7 +61,10 @@ static void put_value(FILE *out, const char *indent, const Command *c, const voi
         break;
     case K_TEXT:
     case K_WORD: fputs(f, out); break;
-    case K_CHOICE: fputs(c->choices[*(const vrDistribution *)f], out); break;
+    case K_CHOICE:
+        if (c->offset == offsetof(vrSettings, broadphase)) fputs(c->choices[*(const vrBroadphaseKind *)f], out);
+        else fputs(c->choices[*(const vrDistribution *)f], out);
+        break;
     case K_UINT64: fprintf(out, "%llu", *(const unsigned long long *)f); break;
     case K_NONE: break;
     }

@@ -17,6 +17,8 @@ static void store_setting(vrSettings *s, const Stmt *st)
     else if (c->offset == offsetof(vrSettings, lcm_url)) store_text(s->lcm_url, sizeof s->lcm_url, st);
     else if (c->offset == offsetof(vrSettings, collision_sound))
         store_text(s->collision_sound, sizeof s->collision_sound, st);
+    else if (c->offset == offsetof(vrSettings, broadphase))
+        s->broadphase = st->choice == 0 ? VR_BROADPHASE_SWEEP : VR_BROADPHASE_TREE;
     else if (c->kind == K_CHOICE) s->distribution = st->choice == 0 ? VR_DIST_ROUND_ROBIN : VR_DIST_IMPROVED;
     else if (c->kind == K_UINT64) s->seed = st->u;
     else sh_store_number(s, st);

@@ -3,12 +3,24 @@
 #include <stdlib.h>
 #include <string.h>
 #include "broadphase.h"
+#include "broad_tree.h"
 #include "grow.h"
 
 void vrBroad_Init(vrBroadphase *bp)
 {
     memset(bp, 0, sizeof *bp);
     bp->t0 = bp->T = NAN;     /* no frame yet: no boxes */
+    bp->stale = 1;
+    bp->near_frame = -1;
+    vrTree_Init(&bp->moving);
+    vrTree_Init(&bp->fixed);
+}
+
+void vrBroad_SetKind(vrBroadphase *bp, vrBroadKind kind)
+{
+    if (kind == bp->kind) return;
+    vrBroadTree_Free(bp);
+    bp->kind = kind;
     bp->stale = 1;
     bp->near_frame = -1;
 }
@@ -21,6 +33,7 @@ void vrBroad_Free(vrBroadphase *bp)
     free(bp->pos);
     free(bp->odd);
     vrPairMap_Free(&bp->map);
+    vrBroadTree_Free(bp);
     vrBroad_Init(bp);
 }
 
@@ -125,7 +138,9 @@ static void near_moved(vrBroadphase *bp, int id)
 void vrBroad_Rebox(vrBroadphase *bp, vrBody *const *body, int id)
 {
     make_box(bp, body, id);
-    if (bp->near_frame == bp->frame && id < bp->poscap && bp->pos[id] >= 0) near_moved(bp, id);
+    if (bp->near_frame != bp->frame) return;
+    if (bp->kind == VR_BROAD_TREE) vrBroadTree_Moved(bp, id);
+    else if (id < bp->poscap && bp->pos[id] >= 0) near_moved(bp, id);
 }
 
 /* the sweep's order: lower x of the box, then id (invalid boxes first) */
@@ -200,6 +215,10 @@ int vrBroad_Meeting(const vrBroadphase *bp, int id, void (*meet)(void *ctx, int 
     const vrBox *x = &bp->box[id];
     int lo = 0, hi = bp->nnear, i;
     if (bp->near_frame != bp->frame) return -1;
+    if (bp->kind == VR_BROAD_TREE) {
+        vrBroadTree_Meeting(bp, id, meet, ctx);
+        return 0;
+    }
     for (i = 0; i < bp->nodd; i++)
         if (bp->odd[i] != id && !vrBroad_Apart(x, &bp->box[bp->odd[i]])) meet(ctx, bp->odd[i]);
     if (!x->valid) {         /* meets everything */
@@ -225,6 +244,11 @@ int vrBroad_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, double t0
     bp->frame++;
     bp->t0 = t0;
     bp->T = T;
+    if (bp->kind == VR_BROAD_TREE) {
+        if (vrBroadTree_NewFrame(bp, body, nbody, meet, boxless, ctx) != 0) return -1;
+        bp->near_frame = bp->frame;
+        return 0;
+    }
     if (bp->stale && remake_sweep(bp, body, nbody) != 0) return -1;
     for (i = 0; i < bp->nsweep; i++)
         if (!vrBroad_Box(bp, body, bp->sweep[i])->valid) boxless(ctx, bp->sweep[i]);

@@ -17,6 +17,7 @@
 
 #include <limits.h>
 #include "body.h"
+#include "aabb_tree.h"
 
 typedef struct vrBox { vec3 lo, hi; int valid; long long frame; } vrBox;
 
@@ -29,7 +30,11 @@ static inline long long vrPair_Order(int x, int y)
 /* pair index by the pair's order (vrPair_Order): open addressing */
 typedef struct vrPairMap { long long *key; int *val; int cap, n; } vrPairMap;
 
+/* which structure finds the pairs (the same pairs either way) */
+typedef enum vrBroadKind { VR_BROAD_SWEEP, VR_BROAD_TREE } vrBroadKind;
+
 typedef struct vrBroadphase {
+    vrBroadKind kind;
     double t0, T, d;          /* the span looked through, the frame's end, the envelope */
     long long frame;          /* counts frames: a box is made when first needed in one */
     vrBox *box;               /* by body id */
@@ -43,10 +48,18 @@ typedef struct vrBroadphase {
     int *pos, poscap;         /* by body id: its index in near, or -1 */
     int *odd, nodd, oddcap;   /* the others: static (wide boxes) or boxless */
     double widest;            /* no box in near is wider along x (within the frame) */
+    /* VR_BROAD_TREE (broad_tree.c): near is unused, odd holds the boxless */
+    vrTree moving, fixed;     /* the moving bodies' boxes, the static ones' */
+    struct vrLeafRef { int node; int in; } *leaf;   /* by body id: its leaf and tree (0: none) */
+    int leafcap;
+    int *late, latecap;       /* bodies whose leaves go in after the frame's refit */
+    double built;             /* the moving tree's cost when last made anew */
     vrPairMap map;
 } vrBroadphase;
 
 void vrBroad_Init(vrBroadphase *bp);
+/* the structure: a change makes the next frame start afresh */
+void vrBroad_SetKind(vrBroadphase *bp, vrBroadKind kind);
 void vrBroad_Free(vrBroadphase *bp);
 /* box slots for body ids below n */
 int vrBroad_Reserve(vrBroadphase *bp, int n);

@@ -25,7 +25,7 @@ vrParams vrSettings_Params(const vrSettings *s);
 /* What a change of settings does: the pair owners take the new parameters
  * (VR_PARAMS_OWNERS: every pair is looked at afresh), and where free flight
  * changes every body is re-anchored at the frame start (VR_PARAMS_MOTION).
- * The heap changes no motion: re-anchoring for it would round poses
+ * The heap and the broadphase change no motion: re-anchoring for it would round poses
  * differently from a run that never switched it (SPEC 3.2: heap on and off
  * give the same bits, and so does switching between them). */
 enum { VR_PARAMS_OWNERS = 1, VR_PARAMS_MOTION = 2 };

@@ -31,6 +31,7 @@ typedef struct vrParams {
     double d;            /* collision distance: the envelope the schedule keeps (thesis 3.2.3) */
     vrFlight flight;
     int use_heap;
+    int use_tree;        /* 1: box trees find the boxes that meet; 0: the sorted sweep */
 } vrParams;
 
 /* SPEC 7's contact gap g_c = min(d, 1 mm): where impacts and rest act,

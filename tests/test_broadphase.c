@@ -1,7 +1,8 @@
 /* test_broadphase.c — the bodies an event's box meets (vrBroad_Meeting)
  * are exactly those a look at every body finds, however the events rebox
- * bodies within a frame, and the frame start's sweep meets every
- * overlapping pair once (but two static bodies, which make no pair). */
+ * bodies within a frame, and the frame start meets every overlapping pair
+ * once (but two static bodies, which make no pair): with the sorted sweep
+ * and with the box trees (broad_tree.c). */
 #include <stdlib.h>
 #include <string.h>
 #include "test.h"
@@ -60,8 +61,15 @@ static int meeting_is_exact(vrBroadphase *bp, int id)
     return 0;
 }
 
-static int pairs_met;
-static void count_pair(void *ctx, int x, int y) { (void)ctx, (void)x, (void)y, pairs_met++; }
+static int pairs_met, pairs_wrong;
+static unsigned char met[NB][NB];
+/* each pair once, in order (x < y) */
+static void count_pair(void *ctx, int x, int y)
+{
+    (void)ctx;
+    pairs_met++;
+    if (x >= y || met[x][y]++) pairs_wrong++;
+}
 static void no_box(void *ctx, int id) { (void)ctx, (void)id; }
 
 /* the pairs the sweep must meet: overlapping, not both static (the
@@ -70,7 +78,11 @@ static int overlapping_pairs(vrBroadphase *bp)
 {
     int x, y, n = 0;
     for (x = 0; x < NB; x++)
-        for (y = x + 1; y < NB; y++) n += y >= NSTATIC && !vrBroad_Apart(&bp->box[x], &bp->box[y]);
+        for (y = x + 1; y < NB; y++) {
+            int want = y >= NSTATIC && !vrBroad_Apart(&bp->box[x], &bp->box[y]);
+            if (met[x][y] != want) pairs_wrong++;
+            n += want;
+        }
     return n;
 }
 
@@ -78,20 +90,22 @@ static int overlapping_pairs(vrBroadphase *bp)
  * (some of them boxless: anchored past the frame's end), which moves their
  * boxes far along the sorted list; after each, a random body's meeting
  * set is checked. */
-static int test_meeting_finds_exactly_the_overlapping_boxes(void)
+static int meeting_finds_exactly_the_overlapping_boxes(vrBroadKind kind)
 {
     vrBroadphase bp;
     int frame, k, met_total = 0;
     make_spheres();
     vrBroad_Init(&bp);
+    vrBroad_SetKind(&bp, kind);
     ENSURE(vrBroad_Reserve(&bp, NB) == 0);
     vrBroad_SetEnvelope(&bp, 0.01);
     ENSURE(vrBroad_Meeting(&bp, 0, found, NULL) == -1);      /* no frame yet: no list */
     for (frame = 0; frame < 2; frame++) {
         double t0 = 0.1 * frame, T = t0 + 0.1;
-        pairs_met = 0;
+        pairs_met = pairs_wrong = 0;
+        memset(met, 0, sizeof met);
         ENSURE(vrBroad_NewFrame(&bp, ptr, NB, t0, T, count_pair, no_box, NULL) == 0);
-        ENSURE(pairs_met == overlapping_pairs(&bp) && pairs_met > 20);
+        ENSURE(pairs_met == overlapping_pairs(&bp) && pairs_met > 20 && pairs_wrong == 0);
         ENSURE(vrBroad_CanMeet(&bp));
         for (k = 0; k < 1500; k++) {
             double t = t0 + 0.1 * (k + 1) / 1501.0;
@@ -123,8 +137,19 @@ static int test_meeting_finds_exactly_the_overlapping_boxes(void)
     return 0;
 }
 
+static int test_meeting_finds_exactly_the_overlapping_boxes(void)
+{
+    return meeting_finds_exactly_the_overlapping_boxes(VR_BROAD_SWEEP);
+}
+
+static int test_tree_meeting_finds_exactly_the_overlapping_boxes(void)
+{
+    return meeting_finds_exactly_the_overlapping_boxes(VR_BROAD_TREE);
+}
+
 static const vrTest tests[] = {
     TEST(test_meeting_finds_exactly_the_overlapping_boxes),
+    TEST(test_tree_meeting_finds_exactly_the_overlapping_boxes),
 };
 
 const vrTestSuite vrSuite_Broadphase = {"broadphase", tests, TEST_COUNT(tests), NULL, NULL, 0};

@@ -209,6 +209,7 @@ void vrWire_PutParams(vroc_params_t *m, const vrParams *p)
     m->max_linear = p->flight.max_linear;
     m->max_angular = p->flight.max_angular;
     m->heap = (int8_t)p->use_heap;
+    m->tree = (int8_t)p->use_tree;
 }
 
 int vrWire_GetParams(const vroc_params_t *m, vrParams *p)
@@ -221,6 +222,7 @@ int vrWire_GetParams(const vroc_params_t *m, vrParams *p)
     p->flight.max_linear = m->max_linear;
     p->flight.max_angular = m->max_angular;
     p->use_heap = m->heap != 0;
+    p->use_tree = m->tree != 0;
     return 0;
 }
 
