@@ -5,6 +5,7 @@
  *   place  — a definition put at a point with its mass and elasticity (spheres, boxes)
  *   fnv    — the FNV-1a hash of n bytes (vrScene_DumpHash)
  */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "scene.h"
@@ -38,6 +39,37 @@ void vrScene_ShellCaps(vrSettings *s)
 {
     s->max_linear = 8;
     s->max_angular = 4;
+}
+
+vrWorld *vrScene_RandomRoom(const vrSettings *s, int n)
+{
+    vrWorld *w = vrWorld_Create();
+    char err[256] = "";
+    if (!w) return NULL;
+    if (vrWorld_SetSettings(w, s, err, sizeof err) != 0 || vrWorld_AddRandom(w, n, err, sizeof err) != 0) {
+        printf("    room of %d: %s\n", n, err);
+        vrWorld_Destroy(w);
+        return NULL;
+    }
+    return w;
+}
+
+int vrScene_ReplaceSome(vrWorld *w, int n, int first, int stride, int born, const char *tag, vec3 v)
+{
+    char name[32];
+    int k, made = 0;
+    for (k = first; k < n; k += stride) {
+        vrObjectId id;
+        vrObjectState st;
+        snprintf(name, sizeof name, "r%d", k);
+        id = vrWorld_FindObject(w, name);
+        if (vrWorld_GetObjectState(w, id, &st) != 0 || vrWorld_DeleteObject(w, id) != 0) return -1;
+        if (made >= born) continue;
+        snprintf(name, sizeof name, "%s%d", tag, made++);
+        if (vrScene_Sphere(w, name, 0.1, vec3_make(st.position[0], st.position[1], st.position[2]), v, 1, 1)
+            == VR_NO_OBJECT) return -1;
+    }
+    return 0;
 }
 
 /* ---- objects ------------------------------------------------------------------ */

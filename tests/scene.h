@@ -24,6 +24,14 @@ void vrScene_Set(vrWorld *w, void (*edit)(vrSettings *));
 void vrScene_HeapOff(vrSettings *s);
 /* the shell's speed caps (SPEC 3.2, the thesis's): max_linear 8 m/s, max_angular 4 rad/s */
 void vrScene_ShellCaps(vrSettings *s);
+/* a world of settings s and n random objects (vrWorld_AddRandom, named
+ * r0..); NULL, with the error printed, when either is refused */
+vrWorld *vrScene_RandomRoom(const vrSettings *s, int n);
+/* mid-run edits: every stride-th random object from `first` deleted, and in
+ * the place of the first `born` of them a ball of 0.1 m named TAG0.. (inside
+ * the deleted object's own bounding sphere, so clear of the others), flying
+ * at v; -1 when an object is missing or refused */
+int vrScene_ReplaceSome(vrWorld *w, int n, int first, int stride, int born, const char *tag, vec3 v);
 
 /* ---- objects ------------------------------------------------------------------ */
 

@@ -174,39 +174,31 @@ static void four_ways(vrWorld **w)
  * clamp taking energy out), gravity g, the friction and elasticity given */
 static vrWorld *room(int n, double side, double h, double g, double mu, double e)
 {
-    vrWorld *w = vrWorld_Create();
-    vrSettings s = *vrWorld_Settings(w);
-    char err[256] = "";
+    vrSettings s = vrSettings_Default();
     s.room = side, s.seed = 26, s.collision_dist = 0.01, s.time_step = h;
     s.max_linear = 1000, s.max_angular = 10000;
     s.force_mag = g, s.default_friction = mu, s.default_elasticity = e;
-    if (vrWorld_SetSettings(w, &s, err, sizeof err) != 0 || vrWorld_AddRandom(w, n, err, sizeof err) != 0) {
-        printf("    room of %d: %s\n", n, err);
-        vrWorld_Destroy(w);
-        return NULL;
-    }
-    return w;
+    return vrScene_RandomRoom(&s, n);
 }
 
-/* every ninth random object from `first` deleted, a ball of 0.1 m flying
- * where the first `born` of them were (inside their bounding spheres, so
- * clear of the others) */
+/* the same room four times, set the four ways; -1 when one is refused */
+static int four_rooms(vrWorld **w, int n, double side, double h, double g, double mu, double e)
+{
+    int i, made = 0;
+    for (i = 0; i < 4; i++) made += (w[i] = room(n, side, h, g, mu, e)) != NULL;
+    if (made < 4) {
+        for (i = 0; i < 4; i++) vrWorld_Destroy(w[i]);
+        return -1;
+    }
+    four_ways(w);
+    return 0;
+}
+
+/* every ninth random object from `first` deleted, a ball flying where the
+ * first `born` of them were (vrScene_ReplaceSome) */
 static int replace_some(vrWorld *w, int n, int first, int born, const char *tag)
 {
-    char name[32];
-    int k, made = 0;
-    for (k = first; k < n; k += 9) {
-        vrObjectState st;
-        vrObjectId id;
-        snprintf(name, sizeof name, "r%d", k);
-        id = vrWorld_FindObject(w, name);
-        if (vrWorld_GetObjectState(w, id, &st) != 0 || vrWorld_DeleteObject(w, id) != 0) return -1;
-        if (made >= born) continue;
-        snprintf(name, sizeof name, "%s%d", tag, made++);
-        if (vrScene_Sphere(w, name, 0.1, vec3_make(st.position[0], st.position[1], st.position[2]),
-                           vec3_make(1, -1, 2), 1, 1) == VR_NO_OBJECT) return -1;
-    }
-    return 0;
+    return vrScene_ReplaceSome(w, n, first, 9, born, tag, vec3_make(1, -1, 2));
 }
 
 static int test_room_with_edits_same_bits_tree_and_sweep_heap_on_and_off(void)
@@ -214,8 +206,7 @@ static int test_room_with_edits_same_bits_tree_and_sweep_heap_on_and_off(void)
     vrWorld *w[4];
     vrStats st;
     int i;
-    for (i = 0; i < 4; i++) w[i] = room(300, 10, 0.05, 0, 0, 1);
-    four_ways(w);
+    ENSURE(four_rooms(w, 300, 10, 0.05, 0, 0, 1) == 0);
     ENSURE(vrScene_StepRuns(w, 4, 12) == 0);
     for (i = 0; i < 4; i++) ENSURE(replace_some(w[i], 300, 0, 12, "a") == 0);
     ENSURE(vrScene_StepRuns(w, 4, 14) == 0);
@@ -232,9 +223,7 @@ static int test_pile_same_bits_tree_and_sweep_heap_on_and_off(void)
 {
     vrWorld *w[4];
     vrStats st;
-    int i;
-    for (i = 0; i < 4; i++) w[i] = room(100, 4, 0.01, 9.8, 0.5, 0.5);
-    four_ways(w);
+    ENSURE(four_rooms(w, 100, 4, 0.01, 9.8, 0.5, 0.5) == 0);
     ENSURE(vrScene_StepRuns(w, 4, 250) == 0);
     st = vrScene_Stats(w[0]);
     printf("    pile: %lld collisions, %lld island contacts in 250 frames, %d resting\n", st.collisions,

@@ -71,14 +71,17 @@ static void room_scene(vrSettings *s)
     s->max_angular = 100;
 }
 
-static vrWorld *random_room(int heap)
+/* n random bodies in the settings `scene` makes, with the heap or without */
+static vrWorld *random_bodies(void (*scene)(vrSettings *), int n, int heap)
 {
     vrWorld *w = vrWorld_Create();
-    vrScene_Set(w, room_scene);
+    vrScene_Set(w, scene);
     if (!heap) vrScene_Set(w, vrScene_HeapOff);
-    vrWorld_AddRandom(w, 30, NULL, 0);
+    vrWorld_AddRandom(w, n, NULL, 0);
     return w;
 }
+
+static vrWorld *random_room(int heap) { return random_bodies(room_scene, 30, heap); }
 
 /* heap on and heap off give the same bits; so do two runs */
 static int test_heap_on_off_and_reruns_are_bit_identical(void)
@@ -235,14 +238,7 @@ static void pile_scene(vrSettings *s)
     s->default_elasticity = 0.5;
 }
 
-static vrWorld *pile(int heap)
-{
-    vrWorld *w = vrWorld_Create();
-    vrScene_Set(w, pile_scene);
-    if (!heap) vrScene_Set(w, vrScene_HeapOff);
-    vrWorld_AddRandom(w, 100, NULL, 0);
-    return w;
-}
+static vrWorld *pile(int heap) { return random_bodies(pile_scene, 100, heap); }
 
 static int test_a_landing_pile_gives_the_same_bits_with_the_heap_and_without(void)
 {

@@ -26,9 +26,7 @@
  * clamp taking energy out */
 static vrWorld *flying_room(int n, double side, int heap)
 {
-    vrWorld *w = vrWorld_Create();
-    vrSettings s = *vrWorld_Settings(w);
-    char err[256] = "";
+    vrSettings s = vrSettings_Default();
     s.room = side;
     s.seed = 10000;
     s.collision_dist = 0.01;
@@ -36,33 +34,13 @@ static vrWorld *flying_room(int n, double side, int heap)
     s.max_linear = 1000;
     s.max_angular = 10000;
     s.heap = heap;
-    if (vrWorld_SetSettings(w, &s, err, sizeof err) != 0 || vrWorld_AddRandom(w, n, err, sizeof err) != 0) {
-        printf("    room of %d: %s\n", n, err);
-        vrWorld_Destroy(w);
-        return NULL;
-    }
-    return w;
+    return vrScene_RandomRoom(&s, n);
 }
 
-/* mid-run edits: every stride-th random object from `first` deleted, and
- * in the place of the first `born` of them a ball of 0.1 m (inside the
- * deleted object's own bounding sphere, so clear of the others), flying */
+/* mid-run edits (vrScene_ReplaceSome): balls named late0.. */
 static int replace_some(vrWorld *w, int n, int first, int stride, int born)
 {
-    char name[32];
-    int k, made = 0;
-    for (k = first; k < n; k += stride) {
-        vrObjectId id;
-        vrObjectState st;
-        snprintf(name, sizeof name, "r%d", k);
-        id = vrWorld_FindObject(w, name);
-        if (vrWorld_GetObjectState(w, id, &st) != 0 || vrWorld_DeleteObject(w, id) != 0) return -1;
-        if (made >= born) continue;
-        snprintf(name, sizeof name, "late%d", made++);
-        if (vrScene_Sphere(w, name, 0.1, vec3_make(st.position[0], st.position[1], st.position[2]),
-                           vec3_make(0, 1, -1), 1, 1) == VR_NO_OBJECT) return -1;
-    }
-    return 0;
+    return vrScene_ReplaceSome(w, n, first, stride, born, "late", vec3_make(0, 1, -1));
 }
 
 static int edit_mid_run(vrWorld *w) { return replace_some(w, BIG, 0, 97, 40); }
