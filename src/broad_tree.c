@@ -161,8 +161,6 @@ void vrBroadTree_Meeting(const vrBroadphase *bp, int id, void (*meet)(void *ctx,
     vrAsked a;
     vrAabb q;
     int i;
-    for (i = 0; i < bp->nodd; i++)
-        if (bp->odd[i] != id && !vrBroad_Apart(x, &bp->box[bp->odd[i]])) meet(ctx, bp->odd[i]);
     if (!x->valid) {         /* meets everything */
         for (i = 0; i < bp->leafcap; i++)
             if (i != id && bp->leaf[i].in) meet(ctx, i);

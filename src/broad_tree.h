@@ -12,7 +12,7 @@
 /* vrBroad_NewFrame's pairs, the boxes made already for the frame */
 int vrBroadTree_NewFrame(vrBroadphase *bp, vrBody *const *body, int nbody, void (*meet)(void *ctx, int x, int y),
                          void (*boxless)(void *ctx, int id), void *ctx);
-/* vrBroad_Meeting's bodies (the frame's trees made) */
+/* vrBroad_Meeting's bodies in the trees (the frame's trees made; vrBroad_Meeting met the odd ones) */
 void vrBroadTree_Meeting(const vrBroadphase *bp, int id, void (*meet)(void *ctx, int y), void *ctx);
 /* body id's box was made again within the frame */
 void vrBroadTree_Moved(vrBroadphase *bp, int id);

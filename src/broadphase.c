@@ -215,12 +215,12 @@ int vrBroad_Meeting(const vrBroadphase *bp, int id, void (*meet)(void *ctx, int 
     const vrBox *x = &bp->box[id];
     int lo = 0, hi = bp->nnear, i;
     if (bp->near_frame != bp->frame) return -1;
+    for (i = 0; i < bp->nodd; i++)
+        if (bp->odd[i] != id && !vrBroad_Apart(x, &bp->box[bp->odd[i]])) meet(ctx, bp->odd[i]);
     if (bp->kind == VR_BROAD_TREE) {
         vrBroadTree_Meeting(bp, id, meet, ctx);
         return 0;
     }
-    for (i = 0; i < bp->nodd; i++)
-        if (bp->odd[i] != id && !vrBroad_Apart(x, &bp->box[bp->odd[i]])) meet(ctx, bp->odd[i]);
     if (!x->valid) {         /* meets everything */
         for (i = 0; i < bp->nnear; i++)
             if (bp->near[i] != id) meet(ctx, bp->near[i]);

@@ -110,6 +110,13 @@ static int stalled(double *change, int k, double most, int sweeps, double tol)
     return most * pow(most / was, (double)(sweeps - 1 - k) / STALL_SPAN) > tol;
 }
 
+/* levels() once a solve, when first asked (*known -1 until then) */
+static int on_ground(int *known, vrIslandBody *b, int nb, const vrIslandContact *c, int nc)
+{
+    if (*known < 0) *known = levels(b, nb, c, nc);
+    return *known;
+}
+
 static int valid(const vrIslandBody *body, int nbody, const vrIslandContact *c, int ncontact)
 {
     int i, k;
@@ -162,13 +169,14 @@ static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact
         vrSolve_Hold(&s, ci, 0, 0);
         if (c[ci].warm && !frictionless) vrSolve_ApplyImpulses(&s, ci);
     }
-    grounded = levels(body, nbody, c, ncontact);
+    grounded = -1;   /* levels() made only when asked: most solves converge in a sweep or two */
     for (k = 0; k < sweeps; k++) {
         double most = sweep(&s);
         st->sweeps++;
-        if (most <= tol || (stall && grounded && stalled(change, k, most, sweeps, tol))) break;
+        if (most <= tol) break;
+        if (stall && stalled(change, k, most, sweeps, tol) && on_ground(&grounded, body, nbody, c, ncontact)) break;
     }
-    if (grounded && residual(&s) > tol) {
+    if (residual(&s) > tol && on_ground(&grounded, body, nbody, c, ncontact)) {
         shock_pass(&s, sweeps, tol);
         st->shock = 1;
     }
