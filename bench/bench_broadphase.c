@@ -26,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "figures.h"
 
 #define RUNS 5
 
@@ -71,18 +72,6 @@ static int run(const char *kind, const char *script, Stats *first, Stats *last)
     return ok;
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 /* frames per second between the first stats line and the last (from the
  * start when there is only one) */
 static double fps(const Stats *a, const Stats *b)
@@ -107,7 +96,7 @@ static void scene(const char *name, const char *script)
             f[k][r] = fps(&a, &b);
             end[k] = b;
         }
-    m[0] = median(f[0], RUNS), m[1] = median(f[1], RUNS);
+    m[0] = bench_median(f[0], RUNS), m[1] = bench_median(f[1], RUNS);
     /* checks (distance queries) may differ a little: the pairs are met,
      * so their records made and looked at, in another order */
     if (end[0].collisions != end[1].collisions || end[0].resting != end[1].resting) {
@@ -150,14 +139,6 @@ static void pile_scene(void)
                   "default_elasticity = 0.5\nmax_frames = 0\nroom = 4\nrandom 100\nstep 1\nstats\nstep 3000\nstats\n");
 }
 
-static int wanted(int argc, char **argv, const char *name)
-{
-    int k;
-    for (k = 1; k < argc; k++)
-        if (!strcmp(argv[k], name)) return 1;
-    return argc < 2;
-}
-
 int main(int argc, char **argv)
 {
     const char *build = getenv("VROC_BUILD"), *cpu = getenv("VROC_BENCH_CPU");
@@ -175,10 +156,10 @@ int main(int argc, char **argv)
     printf("sweep against tree: median frames/s of %d interleaved runs each (%s)\n", RUNS, *pin ? pin : "unpinned");
     printf("  %-12s %10s %10s %8s %12s %12s %12s\n", "scene", "sweep fps", "tree fps", "tree/sw", "collisions",
            "sweep checks", "tree checks");
-    if (wanted(argc, argv, "random2000")) room_scene("random2000", 2000, 35, 20);
-    if (wanted(argc, argv, "random5000")) room_scene("random5000", 5000, 47.6, 20);
-    if (wanted(argc, argv, "random10000")) room_scene("random10000", 10000, 60, 20);
-    if (wanted(argc, argv, "peer1000")) peer_scene();
-    if (wanted(argc, argv, "pile")) pile_scene();
+    if (bench_wanted(argc, argv, "random2000")) room_scene("random2000", 2000, 35, 20);
+    if (bench_wanted(argc, argv, "random5000")) room_scene("random5000", 5000, 47.6, 20);
+    if (bench_wanted(argc, argv, "random10000")) room_scene("random10000", 10000, 60, 20);
+    if (bench_wanted(argc, argv, "peer1000")) peer_scene();
+    if (bench_wanted(argc, argv, "pile")) pile_scene();
     return failures ? 1 : 0;
 }

@@ -28,6 +28,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "figures.h"
 
 #define RUNS 3
 #define MAX_STATS 8
@@ -120,19 +121,6 @@ static void run_script(const char *text, Run *r)
     if (!r->ok) fprintf(stderr, "bench_contact: vroc failed (or a stats line is missing) on:\n%.300s\n", text);
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    if (n <= 0) return 0;
-    qsort(v, n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 static double seg_ms(const Run *r, int a, int b) { return r->s[b].sim_ms - r->s[a].sim_ms; }
 
 /* the counts that must repeat from run to run */
@@ -162,8 +150,8 @@ static int timed(const char *text, int runs, double slow_ms, Timed *t)
         t->runs = i + 1;
         if (slow_ms > 0 && ms[0] > slow_ms) break;
     }
-    t->ms = median(ms, t->runs);
-    for (j = 0; j + 1 < t->run.nstats; j++) t->seg[j] = median(seg[j], t->runs);
+    t->ms = bench_median(ms, t->runs);
+    for (j = 0; j + 1 < t->run.nstats; j++) t->seg[j] = bench_median(seg[j], t->runs);
     return 1;
 }
 
@@ -528,7 +516,7 @@ static void pile_segments(const Timed *t)
 #define PILE_SEEDS 7
 static void pile_seeds(void)
 {
-    double fps[PILE_SEEDS], least = 100;
+    double fps[PILE_SEEDS], least = 100, med;
     int k, n = 0;
     printf("  seeds 0-%d, one run each:", PILE_SEEDS - 1);
     for (k = 0; k < PILE_SEEDS; k++) {
@@ -550,8 +538,8 @@ static void pile_seeds(void)
     }
     printf("\n");
     if (n == 0) return;
-    row("pile", "fps_median", "frames/s, median over the seeds", fix(median(fps, n), 0), ">= 2000",
-        at_least(median(fps, n), 2000));
+    med = bench_median(fps, n);
+    row("pile", "fps_median", "frames/s, median over the seeds", fix(med, 0), ">= 2000", at_least(med, 2000));
     row("pile", "resting_least", "fewest resting at 60 s over the seeds", fix(least, 0), ">= 95",
         count_at_least(least, 95));
 }
@@ -617,9 +605,9 @@ static void office(void)
         printf("  could not run\n");
         return;
     }
-    r = median(ratio, n);
-    row("office", "sim_ms_heap_on", "sim_ms, heap = 1", fix(median(ms_on, n), 1), "", "");
-    row("office", "sim_ms_heap_off", "sim_ms, heap = 0", fix(median(ms_off, n), 1), "", "");
+    r = bench_median(ratio, n);
+    row("office", "sim_ms_heap_on", "sim_ms, heap = 1", fix(bench_median(ms_on, n), 1), "", "");
+    row("office", "sim_ms_heap_off", "sim_ms, heap = 0", fix(bench_median(ms_off, n), 1), "", "");
     row("office", "ratio", "heap off / on (median of paired runs)", fix(r, 2), ">= 20×", at_least(r, 20));
     row("office", "checks_on", "checks, heap = 1", fix(on.s[1].checks - on.s[0].checks, 0), "", "");
     row("office", "checks_off", "checks, heap = 0", fix(off.s[1].checks - off.s[0].checks, 0), "", "");
@@ -642,16 +630,6 @@ static void machine(void)
            *pin ? pin_buf : "unpinned (no taskset)");
     printf("figures: sim_ms deltas between vroc `stats` lines (simulation only), not wall time;"
            " medians of %d separate vroc processes\n", RUNS);
-}
-
-/* the benchmarks named on the command line (all when none is): `pile`
- * alone while working on the solver, where the whole bench takes minutes */
-static int wanted(int argc, char **argv, const char *name)
-{
-    int i;
-    for (i = 1; i < argc; i++)
-        if (!strcmp(argv[i], name)) return 1;
-    return argc < 2;
 }
 
 int main(int argc, char **argv)
@@ -684,7 +662,7 @@ int main(int argc, char **argv)
     if (!(csv = open_memstream(&csv_text, &csv_len))) csv = stdout;
     machine();
     for (k = 0; k < sizeof benches / sizeof benches[0]; k++)
-        if (wanted(argc, argv, benches[k].name)) benches[k].run();
+        if (bench_wanted(argc, argv, benches[k].name)) benches[k].run();
     if (csv != stdout) {
         fclose(csv);
         printf("\n%s", csv_text ? csv_text : "");

@@ -32,6 +32,7 @@
 #include <unistd.h>
 
 #include "vroc.h"
+#include "figures.h"
 
 #define FRAMES 600          /* a thesis scene's story: 6 s at 0.01 s */
 #define STEREO_FRAMES 200
@@ -141,19 +142,6 @@ static Run run_scene(const char *scene, int heap, int stereo, const char *extra,
 }
 
 /* ---- figures --------------------------------------------------------------- */
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    if (n <= 0) return 0;
-    qsort(v, n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 /* median over `runs` runs of frames per second; *one keeps a run's counts */
 typedef struct Rate { double fps, sim_ms; Run one; int runs; } Rate;
 
@@ -171,8 +159,8 @@ static Rate rate(const char *scene, int heap, int stereo, const char *extra, int
         fps[n] = 1000 * r.frames / t, ms[n] = r.sim_ms, n++;
     }
     out.runs = n;
-    out.fps = median(fps, n);
-    out.sim_ms = median(ms, n);
+    out.fps = bench_median(fps, n);
+    out.sim_ms = bench_median(ms, n);
     return out;
 }
 
@@ -195,11 +183,11 @@ static double paired(const char *scene, int frames, int runs, Rate *on, Rate *of
         n++;
     }
     on->runs = off->runs = n;
-    on->fps = median(fon, n);
-    off->fps = median(foff, n);
-    on->sim_ms = median(mson, n);
-    off->sim_ms = median(msoff, n);
-    return median(ratio, n);
+    on->fps = bench_median(fon, n);
+    off->fps = bench_median(foff, n);
+    on->sim_ms = bench_median(mson, n);
+    off->sim_ms = bench_median(msoff, n);
+    return bench_median(ratio, n);
 }
 
 /* mean internal steps per frame over the run (deterministic: one run) */
@@ -400,14 +388,14 @@ static double peer(const char *dir, const Peer *pe)
         printf("%-22s could not run (%s)\n", pe->file, path);
         return 0;
     }
-    printf("%-22s %6.0f %4d %9s %9.4f | %6.0f %6.0f %6.0f", pe->file, frames, n, num(a, median(fps, n)), ratio,
+    printf("%-22s %6.0f %4d %9s %9.4f | %6.0f %6.0f %6.0f", pe->file, frames, n, num(a, bench_median(fps, n)), ratio,
            pe->ode, pe->bullet, pe->mujoco);
     if (pe->ode > 500)
-        printf(" | >=%.0f fps: %s, energy within 1%%: %s\n", 2 * pe->ode, yes(median(fps, n) >= 2 * pe->ode),
+        printf(" | >=%.0f fps: %s, energy within 1%%: %s\n", 2 * pe->ode, yes(bench_median(fps, n) >= 2 * pe->ode),
                yes(ratio > 0.99 && ratio < 1.01));
     else
-        printf(" | %.3fx ODE (reported, no target)\n", median(fps, n) / pe->ode);
-    printf("csv,peer,%s,%.0f,%d,%.3f,%.6f,%g\n", pe->file, frames, n, median(fps, n), ratio, pe->ode);
+        printf(" | %.3fx ODE (reported, no target)\n", bench_median(fps, n) / pe->ode);
+    printf("csv,peer,%s,%.0f,%d,%.3f,%.6f,%g\n", pe->file, frames, n, bench_median(fps, n), ratio, pe->ode);
     return last_ms;
 }
 
