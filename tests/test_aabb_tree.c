@@ -14,6 +14,9 @@
 #include "test.h"
 #include "aabb_tree.h"
 #include "scene.h"
+#include "config.h"
+#include "parallel/wire.h"
+#include "parallel/wire.h"
 
 #define TEST_LCG_SEED 2601ULL
 #include "test_lcg.h"
@@ -250,12 +253,72 @@ static int test_switching_structure_mid_run_keeps_the_bits(void)
     return 0;
 }
 
+/* the workers get the structure with the settings (params.tree on the
+ * wire) and each makes its own pairs from it: with either structure, in the
+ * process's workers or serially, the same bits through edits */
+static void two_workers(vrSettings *s)
+{
+    s->gps = 2;
+    snprintf(s->lcm_url, sizeof s->lcm_url, "memq://");
+}
+
+static void three_workers(vrSettings *s)
+{
+    two_workers(s);
+    s->gps = 3;
+    s->heap = 1;
+    s->distribution = VR_DIST_IMPROVED;
+}
+
+/* ...which it reaches: the params message carries both choices both ways */
+static int test_the_structure_and_the_heap_reach_the_workers(void)
+{
+    int tree, heap;
+    for (tree = 0; tree < 2; tree++)
+        for (heap = 0; heap < 2; heap++) {
+            vrSettings s = vrSettings_Default();
+            vrParams p, q;
+            vroc_params_t m;
+            s.broadphase = tree ? VR_BROADPHASE_TREE : VR_BROADPHASE_SWEEP;
+            s.heap = heap;
+            p = vrSettings_Params(&s);
+            ENSURE(p.use_tree == tree && p.use_heap == heap);
+            memset(&m, 0, sizeof m);
+            memset(&q, 0, sizeof q);
+            vrWire_PutParams(&m, &p);
+            ENSURE(vrWire_GetParams(&m, &q) == 0);
+            ENSURE_MSG(q.use_tree == tree && q.use_heap == heap, "tree %d heap %d: got %d %d", tree, heap, q.use_tree, q.use_heap);
+        }
+    return 0;
+}
+
+static int test_workers_give_the_serial_bits_with_either_structure(void)
+{
+    vrWorld *w[4];
+    vrStats st;
+    int i;
+    ENSURE(four_rooms(w, 300, 10, 0.05, 0, 0, 1) == 0);
+    vrScene_Set(w[2], two_workers);      /* sweep, heap off */
+    vrScene_Set(w[3], three_workers);    /* tree, heap on */
+    ENSURE(vrScene_StepRuns(w, 4, 10) == 0);
+    for (i = 0; i < 4; i++) ENSURE(replace_some(w[i], 300, 2, 10, "c") == 0);
+    ENSURE(vrScene_StepRuns(w, 4, 12) == 0);
+    st = vrScene_Stats(w[3]);
+    printf("    %d objects, %lld collisions in 22 frames, %d workers\n", st.objects, st.collisions, st.gps);
+    ENSURE(st.gps == 3 && vrScene_Stats(w[2]).gps == 2);
+    ENSURE(st.collisions > 50);
+    ENSURE(vrScene_SameRunsFreed(w, 4));
+    return 0;
+}
+
 static const vrTest tests[] = {
     TEST(test_tree_pairs_and_queries_equal_brute_force_through_changes),
     TEST(test_pairs_across_two_trees_equal_brute_force),
     TEST(test_room_with_edits_same_bits_tree_and_sweep_heap_on_and_off),
     TEST(test_pile_same_bits_tree_and_sweep_heap_on_and_off),
     TEST(test_switching_structure_mid_run_keeps_the_bits),
+    TEST(test_the_structure_and_the_heap_reach_the_workers),
+    TEST(test_workers_give_the_serial_bits_with_either_structure),
 };
 
 const vrTestSuite vrSuite_AabbTree = {"aabb_tree", tests, TEST_COUNT(tests), NULL, NULL, 0};
