@@ -3,9 +3,9 @@
  * AABB tree as Box2D/Bullet do: measure both on these scenes and keep the
  * faster"), make bench.
  *
- * Each scene is a shell script run by "$VROC_BUILD/vroc -q -b" with
- * `broadphase = sweep` or `broadphase = tree` put first, pinned to one core
- * (taskset -c $VROC_BENCH_CPU, 0 by default, when taskset exists).  The
+ * Each scene is a shell script run by the release shell (shell_run.h:
+ * pinned to one core) with `broadphase = sweep` or `broadphase = tree` put
+ * first.  The
  * runs of the two structures alternate (sweep first in odd rounds, tree in
  * even ones), RUNS rounds, and the figure is each one's median frames per
  * second from the `sim_ms` between two stats lines (the simulation alone:
@@ -27,56 +27,50 @@
 #include <string.h>
 #include <unistd.h>
 #include "figures.h"
+#include "shell_run.h"
 
 #define RUNS 5
 
-typedef struct Stats { double frames, sim_ms, collisions, checks, resting; int n; } Stats;
+/* the first and last stats lines of a run, and how many there were */
+typedef struct Ends { BenchStats first, last; int n; } Ends;
 
-static const char *vroc_path, *peer_dir;
-static char pin[64] = "";
+static BenchShell shell;
+static const char *peer_dir;
 static int failures;
 
-static double field(const char *line, const char *key)
+static void take_stats(void *ctx, const BenchStats *s)
 {
-    const char *p = strstr(line, key);
-    return p ? atof(p + strlen(key)) : 0;
+    Ends *e = ctx;
+    if (e->n++ == 0) e->first = *s;
+    e->last = *s;
 }
 
 /* the first and the last stats line of the script's run */
-static int run(const char *kind, const char *script, Stats *first, Stats *last)
+static int run(const char *kind, const char *script, Ends *e)
 {
-    char path[] = "/tmp/vroc-bench-broadphase-XXXXXX", cmd[1200], line[4096];
-    int fd = mkstemp(path), ok = 0;
-    FILE *f, *p;
-    memset(first, 0, sizeof *first);
-    memset(last, 0, sizeof *last);
-    if (fd < 0 || !(f = fdopen(fd, "w"))) return 0;
-    fprintf(f, "broadphase = %s\n%s", kind, script);
-    fclose(f);
-    snprintf(cmd, sizeof cmd, "%s'%s' -q -b <'%s'", pin, vroc_path, path);
-    if ((p = popen(cmd, "r"))) {
-        while (fgets(line, sizeof line, p))
-            if (!strncmp(line, "frames=", 7)) {
-                Stats s;
-                s.frames = field(line, "frames="), s.sim_ms = field(line, " sim_ms=");
-                s.collisions = field(line, " collisions="), s.checks = field(line, " checks=");
-                s.resting = field(line, " resting=");
-                s.n = last->n + 1;
-                if (!first->n) *first = s;
-                *last = s;
-            }
-        ok = pclose(p) == 0 && last->n >= 1;
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    BenchLines out;
+    int ok = 0;
+    memset(e, 0, sizeof *e);
+    out.stats = take_stats, out.line = NULL, out.ctx = e;
+    if (f) {
+        fprintf(f, "broadphase = %s\n%s", kind, script);
+        fclose(f);
+        ok = bench_shell_run(&shell, text, &out) && e->n >= 1;
     }
-    unlink(path);
+    free(text);
     if (!ok) fprintf(stderr, "bench_broadphase: vroc failed on:\n%.300s\n", script);
     return ok;
 }
 
 /* frames per second between the first stats line and the last (from the
  * start when there is only one) */
-static double fps(const Stats *a, const Stats *b)
+static double fps(const Ends *e)
 {
-    double frames = b->n > 1 ? b->frames - a->frames : b->frames, ms = b->n > 1 ? b->sim_ms - a->sim_ms : b->sim_ms;
+    const BenchStats *a = &e->first, *b = &e->last;
+    double frames = e->n > 1 ? b->frames - a->frames : b->frames, ms = e->n > 1 ? b->sim_ms - a->sim_ms : b->sim_ms;
     return ms > 0 ? 1000 * frames / ms : 0;
 }
 
@@ -84,17 +78,18 @@ static void scene(const char *name, const char *script)
 {
     static const char *const kinds[2] = {"sweep", "tree"};
     double f[2][RUNS], m[2];
-    Stats a, b, end[2];
+    Ends e;
+    BenchStats end[2];
     int r, i;
     for (r = 0; r < RUNS; r++)
         for (i = 0; i < 2; i++) {
             int k = r % 2 ? 1 - i : i;
-            if (!run(kinds[k], script, &a, &b)) {
+            if (!run(kinds[k], script, &e)) {
                 failures++;
                 return;
             }
-            f[k][r] = fps(&a, &b);
-            end[k] = b;
+            f[k][r] = fps(&e);
+            end[k] = e.last;
         }
     m[0] = bench_median(f[0], RUNS), m[1] = bench_median(f[1], RUNS);
     /* checks (distance queries) may differ a little: the pairs are met,
@@ -141,19 +136,10 @@ static void pile_scene(void)
 
 int main(int argc, char **argv)
 {
-    const char *build = getenv("VROC_BUILD"), *cpu = getenv("VROC_BENCH_CPU");
-    static char path[512];
-    if (!build || !*build) build = "build/rel";
+    if (bench_shell_open(&shell, "bench_broadphase") != 0) return 1;
     peer_dir = getenv("VROC_PEER_BENCH");
     if (!peer_dir || !*peer_dir) peer_dir = "../shared/bench";
-    snprintf(path, sizeof path, "%s/vroc", build);
-    vroc_path = path;
-    if (access(path, X_OK)) {
-        fprintf(stderr, "bench_broadphase: no %s (make vroc; run from the repository root)\n", path);
-        return 1;
-    }
-    if (system("command -v taskset >/dev/null 2>&1") == 0) snprintf(pin, sizeof pin, "taskset -c %s ", cpu && *cpu ? cpu : "0");
-    printf("sweep against tree: median frames/s of %d interleaved runs each (%s)\n", RUNS, *pin ? pin : "unpinned");
+    printf("sweep against tree: median frames/s of %d interleaved runs each (%s)\n", RUNS, bench_shell_pinning(&shell));
     printf("  %-12s %10s %10s %8s %12s %12s %12s\n", "scene", "sweep fps", "tree fps", "tree/sw", "collisions",
            "sweep checks", "tree checks");
     if (bench_wanted(argc, argv, "random2000")) room_scene("random2000", 2000, 35, 20);

@@ -1,9 +1,8 @@
 /* bench_contact.c — resting contact and stacking, against the contact issue's
  * goals (make bench).
  *
- * Runs "$VROC_BUILD/vroc -q -b" (the release shell) through popen on script
- * text, pinned to one core (taskset -c $VROC_BENCH_CPU, 0 by default, when
- * taskset exists), as bench_scenes.c does.  Times are `sim_ms` deltas between
+ * Runs the release shell on script text, pinned to one core (shell_run.h,
+ * as bench_scenes.c and bench_broadphase.c do).  Times are `sim_ms` deltas between
  * two `stats` lines (simulation only), never process wall time; each timed
  * figure is the median of RUNS fresh vroc processes (the counts are
  * deterministic; a run whose counts differ from the first is reported).
@@ -29,15 +28,14 @@
 #include <string.h>
 #include <unistd.h>
 #include "figures.h"
+#include "shell_run.h"
 
 #define RUNS 3
 #define MAX_STATS 8
 #define MAX_BODIES 160
 #define PILE_SLOW_MS 30000.0   /* a pile run slower than this runs only once */
 
-typedef struct Stats {
-    double frames, resting, dynamic, collisions, checks, island_contacts, energy, sim_ms;
-} Stats;
+typedef BenchStats Stats;
 
 typedef struct Body { char name[32], state[16]; double x, y, z; } Body;
 
@@ -56,30 +54,11 @@ typedef struct Timed {
     Run run;
 } Timed;
 
-static const char *vroc_path, *pin = "";
-static char pin_buf[64];
+static BenchShell shell;
 static int failures;   /* vroc runs that failed or lacked stats: exit 1 */
 static FILE *csv;      /* the csv lines, printed after the tables (stdout if no memory) */
 
 /* ---- running vroc ---------------------------------------------------------- */
-static void parse_stats(char *line, Stats *s)
-{
-    static const struct { const char *key; size_t off; } keys[] = {
-        {"frames", offsetof(Stats, frames)}, {"resting", offsetof(Stats, resting)},
-        {"dynamic", offsetof(Stats, dynamic)}, {"collisions", offsetof(Stats, collisions)},
-        {"checks", offsetof(Stats, checks)}, {"island_contacts", offsetof(Stats, island_contacts)},
-        {"energy", offsetof(Stats, energy)}, {"sim_ms", offsetof(Stats, sim_ms)}};
-    char *save = NULL, *tok;
-    size_t i;
-    for (tok = strtok_r(line, " \n", &save); tok; tok = strtok_r(NULL, " \n", &save)) {
-        char *eq = strchr(tok, '=');
-        if (!eq) continue;
-        *eq = '\0';
-        for (i = 0; i < sizeof keys / sizeof keys[0]; i++)
-            if (!strcmp(tok, keys[i].key)) *(double *)((char *)s + keys[i].off) = strtod(eq + 1, NULL);
-    }
-}
-
 /* a dump line: name,t,x,y,z,...,state */
 static void parse_body(const char *line, Run *r)
 {
@@ -94,30 +73,25 @@ static void parse_body(const char *line, Run *r)
     r->b[r->nbodies++] = b;
 }
 
-/* runs the script through vroc (stdin from a temporary file, so that its
- * output can be read through popen); ok when it exits 0 with >= 2 stats */
+static void take_stats(void *ctx, const BenchStats *s)
+{
+    Run *r = ctx;
+    if (r->nstats < MAX_STATS) r->s[r->nstats] = *s;
+    r->nstats++;
+}
+
+static void take_line(void *ctx, const char *line)
+{
+    if (line[0] != '#') parse_body(line, ctx);
+}
+
+/* runs the script through vroc; ok when it exits 0 with >= 2 stats */
 static void run_script(const char *text, Run *r)
 {
-    char path[] = "/tmp/vroc-bench-contact-XXXXXX", cmd[1024], line[4096];
-    int fd = mkstemp(path);
-    FILE *f, *p;
+    BenchLines out;
     memset(r, 0, sizeof *r);
-    if (fd < 0 || !(f = fdopen(fd, "w"))) return;
-    fputs(text, f);
-    fclose(f);
-    snprintf(cmd, sizeof cmd, "%s'%s' -q -b <'%s'", pin, vroc_path, path);
-    if ((p = popen(cmd, "r"))) {
-        while (fgets(line, sizeof line, p)) {
-            if (!strncmp(line, "frames=", 7)) {
-                if (r->nstats < MAX_STATS) parse_stats(line, &r->s[r->nstats]);
-                r->nstats++;
-            } else if (line[0] != '#') {
-                parse_body(line, r);
-            }
-        }
-        r->ok = pclose(p) == 0 && r->nstats >= 2 && r->nstats <= MAX_STATS;
-    }
-    unlink(path);
+    out.stats = take_stats, out.line = take_line, out.ctx = r;
+    r->ok = bench_shell_run(&shell, text, &out) && r->nstats >= 2 && r->nstats <= MAX_STATS;
     if (!r->ok) fprintf(stderr, "bench_contact: vroc failed (or a stats line is missing) on:\n%.300s\n", text);
 }
 
@@ -626,8 +600,8 @@ static void machine(void)
             break;
         }
     if (f) fclose(f);
-    printf("machine: %s, %ld cores online; vroc (%s) runs %s\n", model, sysconf(_SC_NPROCESSORS_ONLN), vroc_path,
-           *pin ? pin_buf : "unpinned (no taskset)");
+    printf("machine: %s, %ld cores online; vroc (%s) runs %s\n", model, sysconf(_SC_NPROCESSORS_ONLN), shell.vroc,
+           bench_shell_pinning(&shell));
     printf("figures: sim_ms deltas between vroc `stats` lines (simulation only), not wall time;"
            " medians of %d separate vroc processes\n", RUNS);
 }
@@ -636,17 +610,9 @@ int main(int argc, char **argv)
 {
     static const struct { const char *name; void (*run)(void); } benches[] = {
         {"pyramid", pyramid}, {"tower", tower}, {"heavy", heavy}, {"pile", pile}, {"office", office}};
-    const char *build = getenv("VROC_BUILD"), *cpu = getenv("VROC_BENCH_CPU");
-    static char path[512];
     char *csv_text = NULL;
     size_t csv_len = 0, k;
-    if (!build || !*build) build = "build/rel";
-    snprintf(path, sizeof path, "%s/vroc", build);
-    vroc_path = path;
-    if (access(path, X_OK)) {
-        fprintf(stderr, "bench_contact: no %s (make vroc; run from the repository root)\n", path);
-        return 1;
-    }
+    if (bench_shell_open(&shell, "bench_contact") != 0) return 1;
     for (k = 1; k < (size_t)argc; k++) {
         size_t j;
         for (j = 0; j < sizeof benches / sizeof benches[0] && strcmp(argv[k], benches[j].name); j++) continue;
@@ -654,10 +620,6 @@ int main(int argc, char **argv)
             fprintf(stderr, "bench_contact: no benchmark %s (pyramid, tower, heavy, pile, office)\n", argv[k]);
             return 1;
         }
-    }
-    if (system("command -v taskset >/dev/null 2>&1") == 0) {
-        snprintf(pin_buf, sizeof pin_buf, "taskset -c %s ", cpu && *cpu ? cpu : "0");
-        pin = pin_buf;
     }
     if (!(csv = open_memstream(&csv_text, &csv_len))) csv = stdout;
     machine();

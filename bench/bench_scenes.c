@@ -1,9 +1,8 @@
 /* bench_scenes.c — thesis chapter 5 on this machine (issue 7, make bench).
  *
- * Runs "$VROC_BUILD/vroc -q -b" (the release shell) through popen on
- * scripts that `read` the thesis's scenes (scenes/NAME.cmd) and the peers'
- * scenes of ../shared/bench/, pinned to one core (taskset -c $VROC_BENCH_CPU, 0 by
- * default, when taskset exists), and reads the figures from `stats`
+ * Runs the release shell (shell_run.h: pinned to one core) on scripts
+ * that `read` the thesis's scenes (scenes/NAME.cmd) and the peers' scenes
+ * of ../shared/bench/, and reads the figures from `stats`
  * deltas: frames / sim_ms (simulation only) and frames / (sim_ms +
  * render_ms) (stereo, 640x512, `frames =` before `display`: drawn, not
  * written), never process wall time.  Every run is a fresh process; each
@@ -33,6 +32,7 @@
 
 #include "vroc.h"
 #include "figures.h"
+#include "shell_run.h"
 
 #define FRAMES 600          /* a thesis scene's story: 6 s at 0.01 s */
 #define STEREO_FRAMES 200
@@ -40,68 +40,36 @@
 #define STEREO_RUNS 3
 #define MAX_RUNS 8
 
-typedef struct Stats {
-    double frames, objects, dynamic, pairs, subframes, subframes_thesis;
-    double checks, collisions, energy, sim_ms, render_ms;
-} Stats;
+typedef BenchStats Stats;
 
 /* one measurement: deltas between the first and last `stats` of a script */
 typedef struct Run {
     int ok;
+    int n;                 /* stats lines read */
     Stats first, last;     /* the first and last stats lines */
     double frames, sim_ms, render_ms, checks, collisions;
     double subframes;      /* sum of `subframes` over the stats lines after the first */
 } Run;
 
-static const char *vroc_path, *pin = "";
-static char pin_buf[64];
+static BenchShell shell;
 
 /* ---- running vroc ---------------------------------------------------------- */
-static void parse_stats(char *line, Stats *s)
+static void take_stats(void *ctx, const BenchStats *s)
 {
-    static const struct { const char *key; size_t off; } keys[] = {
-        {"frames", offsetof(Stats, frames)}, {"objects", offsetof(Stats, objects)},
-        {"dynamic", offsetof(Stats, dynamic)}, {"pairs", offsetof(Stats, pairs)},
-        {"subframes", offsetof(Stats, subframes)}, {"subframes_thesis", offsetof(Stats, subframes_thesis)},
-        {"checks", offsetof(Stats, checks)}, {"collisions", offsetof(Stats, collisions)},
-        {"energy", offsetof(Stats, energy)}, {"sim_ms", offsetof(Stats, sim_ms)},
-        {"render_ms", offsetof(Stats, render_ms)}};
-    char *save = NULL, *tok;
-    size_t i;
-    for (tok = strtok_r(line, " \n", &save); tok; tok = strtok_r(NULL, " \n", &save)) {
-        char *eq = strchr(tok, '=');
-        if (!eq) continue;
-        *eq = '\0';
-        for (i = 0; i < sizeof keys / sizeof keys[0]; i++)
-            if (!strcmp(tok, keys[i].key)) *(double *)((char *)s + keys[i].off) = strtod(eq + 1, NULL);
-    }
+    Run *r = ctx;
+    if (r->n++ == 0) r->first = *s;
+    else r->subframes += s->subframes;
+    r->last = *s;
 }
 
 /* runs the script text through vroc; fills r from its stats lines */
 static Run run_script(const char *text)
 {
-    char path[] = "/tmp/vroc-bench-scenes-XXXXXX", cmd[1024], line[4096];
     Run r;
-    int fd = mkstemp(path), n = 0;
-    FILE *f, *p;
+    BenchLines out;
     memset(&r, 0, sizeof r);
-    if (fd < 0 || !(f = fdopen(fd, "w"))) return r;
-    fputs(text, f);
-    fclose(f);
-    snprintf(cmd, sizeof cmd, "%s'%s' -q -b <'%s'", pin, vroc_path, path);
-    if ((p = popen(cmd, "r"))) {
-        while (fgets(line, sizeof line, p)) {
-            Stats s;
-            if (strncmp(line, "frames=", 7)) continue;
-            memset(&s, 0, sizeof s);
-            parse_stats(line, &s);
-            if (n++ == 0) r.first = s;
-            else r.subframes += s.subframes;
-            r.last = s;
-        }
-        r.ok = pclose(p) == 0 && n >= 2;
-    }
-    unlink(path);
+    out.stats = take_stats, out.line = NULL, out.ctx = &r;
+    r.ok = bench_shell_run(&shell, text, &out) && r.n >= 2;
     r.frames = r.last.frames - r.first.frames;
     r.sim_ms = r.last.sim_ms - r.first.sim_ms;
     r.render_ms = r.last.render_ms - r.first.render_ms;
@@ -437,7 +405,7 @@ static void machine(void)
         }
     if (f) fclose(f);
     printf("machine: %s, %ld cores online; vroc runs %s\n", model, sysconf(_SC_NPROCESSORS_ONLN),
-           *pin ? pin_buf : "unpinned (no taskset)");
+           bench_shell_pinning(&shell));
     if (vrDisplay_Open(&d, err, sizeof err) == 0) {
         printf("renderer: %s (OSMesa), 640x512 stereo, frames drawn and not written\n", vrDisplay_RendererName(d));
         vrDisplay_Close(d);
@@ -450,20 +418,8 @@ static void machine(void)
 
 int main(void)
 {
-    const char *build = getenv("VROC_BUILD"), *cpu = getenv("VROC_BENCH_CPU");
-    static char path[512];
     int i;
-    if (!build || !*build) build = "build/rel";
-    snprintf(path, sizeof path, "%s/vroc", build);
-    vroc_path = path;
-    if (access(path, X_OK)) {
-        fprintf(stderr, "bench_scenes: no %s (make vroc; run from the repository root)\n", path);
-        return 1;
-    }
-    if (system("command -v taskset >/dev/null 2>&1") == 0) {
-        snprintf(pin_buf, sizeof pin_buf, "taskset -c %s ", cpu && *cpu ? cpu : "0");
-        pin = pin_buf;
-    }
+    if (bench_shell_open(&shell, "bench_scenes") != 0) return 1;
     machine();
     for (i = 0; i < NSCENES; i++) measure_scene(&scenes[i], &measured[i]);
     table_5_2();
