@@ -5,6 +5,9 @@
 #include "event.h"
 #include "grow.h"
 
+/* a merge of at most this many states searches for each (no table) */
+#define MERGE_SEARCHED 16
+
 void vrUpdate_Init(vrUpdate *u)
 {
     u->n = u->cap = 0;
@@ -58,9 +61,55 @@ vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t)
     int i;
     for (i = 0; i < u->n; i++)
         if (u->body[i].id == b->id) return &u->body[i];
+    return vrUpdate_Append(u, b, t);
+}
+
+vrBodyState *vrUpdate_Append(vrUpdate *u, vrBody *b, double t)
+{
     if (vrGrow((void **)&u->body, &u->cap, u->n + 1, sizeof *u->body) != 0) return NULL;
     vrBody_Capture(b, t, &u->body[u->n]);
     return &u->body[u->n++];
+}
+
+/* the slot of each id in u (its first, as vrUpdate_Body finds), -1 if none */
+static int *slots_of(const vrUpdate *u, int nid)
+{
+    int *slot = malloc(((size_t)nid + 1) * sizeof *slot), i;
+    if (!slot) return NULL;
+    for (i = 0; i <= nid; i++) slot[i] = -1;
+    for (i = u->n - 1; i >= 0; i--)
+        if (u->body[i].id >= 0 && u->body[i].id < nid) slot[u->body[i].id] = i;
+    return slot;
+}
+
+int vrUpdate_Merge(vrUpdate *to, const vrUpdate *from, int nid)
+{
+    int *slot, i;
+    if (from->n <= MERGE_SEARCHED) {
+        for (i = 0; i < from->n; i++) {
+            int k;
+            for (k = 0; k < to->n && to->body[k].id != from->body[i].id; k++) continue;
+            if (k == to->n && vrGrow((void **)&to->body, &to->cap, to->n + 1, sizeof *to->body) != 0) return -1;
+            if (k == to->n) to->n++;
+            to->body[k] = from->body[i];
+        }
+        return 0;
+    }
+    if (!(slot = slots_of(to, nid))) return -1;
+    for (i = 0; i < from->n; i++) {
+        int id = from->body[i].id, k = id >= 0 && id < nid ? slot[id] : -1;
+        if (k < 0) {
+            if (vrGrow((void **)&to->body, &to->cap, to->n + 1, sizeof *to->body) != 0) {
+                free(slot);
+                return -1;
+            }
+            k = to->n++;
+            if (id >= 0 && id < nid) slot[id] = k;
+        }
+        to->body[k] = from->body[i];
+    }
+    free(slot);
+    return 0;
 }
 
 int vrUpdate_Bodies(vrUpdate *u, vrBody *x, vrBody *y, double t, vrBodyState **sx, vrBodyState **sy)

@@ -73,6 +73,14 @@ void vrUpdate_Init(vrUpdate *u);
 void vrUpdate_Free(vrUpdate *u);
 /* the slot of body id in u, added as a capture of b at time t if absent */
 vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t);
+/* ...added without the search, for a caller that knows b is not in u (a
+ * body at a time into an update of many: the search made it quadratic) */
+vrBodyState *vrUpdate_Append(vrUpdate *u, vrBody *b, double t);
+/* each state of `from` into `to`, in order: replacing to's state of its
+ * body (the first, as vrUpdate_Body finds it) or added; ids below nid
+ * (a whole world's update is merged by a table of ids, not searched
+ * state by state); -1 when out of memory */
+int vrUpdate_Merge(vrUpdate *to, const vrUpdate *from, int nid);
 /* x's state and, when y is not NULL, y's (else *sy = NULL), both in the
  * update: both are added before either pointer is taken, since adding one
  * may move the array; -1 when out of memory */

@@ -84,15 +84,8 @@ int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up)
     int i;
     if (up->n == 0) return 0;
     if (vrRest_WakeDependents(w, up, up->body[0].t) != 0) return -1;
-    for (i = 0; i < up->n; i++) {
-        vrBodyState *st;
-        vrObject *o = w->table.obj[up->body[i].id];
-        w->clamps += vrBody_Apply(&o->body, &up->body[i], &f);
-        st = vrUpdate_Body(&w->pending, &o->body, up->body[i].t);
-        if (!st) return -1;
-        *st = up->body[i];
-    }
-    return 0;
+    for (i = 0; i < up->n; i++) w->clamps += vrBody_Apply(&w->table.obj[up->body[i].id]->body, &up->body[i], &f);
+    return vrUpdate_Merge(&w->pending, up, w->table.n);
 }
 
 /* ---- the serial owner set ------------------------------------------------------------ */

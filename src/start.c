@@ -32,18 +32,32 @@ int vrWorld_ListDynamic(vrWorld *w)
     return 0;
 }
 
+/* the objects made since the last start become live, their states
+ * pending for the owners (an edited one's already is: not searched for
+ * each of 10,000 new ones) */
 int vrWorld_MakeLive(vrWorld *w, char *err, size_t n)
 {
+    unsigned char *held = calloc((size_t)w->table.n + 1, 1);
     int i;
+    if (!held) return vrGeom_Fail(err, n, "out of memory");
+    for (i = 0; i < w->pending.n; i++)
+        if (w->pending.body[i].id >= 0 && w->pending.body[i].id < w->table.n) held[w->pending.body[i].id] = 1;
     for (i = 0; i < w->table.n; i++) {
         vrObject *o = w->table.obj[i];
         if (!o || o->live) continue;
         o->live = 1;
-        if (!vrUpdate_Body(&w->pending, &o->body, w->t)) return vrGeom_Fail(err, n, "out of memory");
-        if (vrOwners_AddObject(w, i) != 0) return vrGeom_Fail(err, n, "out of memory");
+        if (!(held[i] ? vrUpdate_Body(&w->pending, &o->body, w->t) : vrUpdate_Append(&w->pending, &o->body, w->t))) {
+            free(held);
+            return vrGeom_Fail(err, n, "out of memory");
+        }
+        if (vrOwners_AddObject(w, i) != 0) {
+            free(held);
+            return vrGeom_Fail(err, n, "out of memory");
+        }
         w->structure++;
         o->overlap_owed = 1;
     }
+    free(held);
     return vrWorld_ListDynamic(w) == 0 ? 0 : vrGeom_Fail(err, n, "out of memory");
 }
 
@@ -55,8 +69,8 @@ static int apply_params(vrWorld *w)
     int motion = w->params_dirty & VR_PARAMS_MOTION;
     if (w->owner) vrOwner_SetParams(w->owner, &p);   /* flags every pair */
     w->update.n = 0;
-    for (i = 0; motion && i < w->ndyn; i++)
-        if (!vrUpdate_Body(&w->update, w->dyn[i], w->t)) return -1;
+    for (i = 0; motion && i < w->ndyn; i++)       /* each body once */
+        if (!vrUpdate_Append(&w->update, w->dyn[i], w->t)) return -1;
     w->params_dirty = 0;
     w->structure++;                                  /* workers are made anew with them */
     return vrWorld_ApplyUpdate(w, &w->update);

@@ -19,6 +19,8 @@
 #include "vroc.h"
 #include "scene.h"
 #include "peak_mem.h"
+#include "event.h"
+#include "grow.h"
 
 #define BIG 10000
 
@@ -259,12 +261,74 @@ static int test_lazy_workers_agree_with_serial_through_edits_and_a_death(void)
     return 0;
 }
 
+/* ---- a world's update merged into the pending states ---------------------------- */
+
+/* what vrUpdate_Merge must do, a state at a time: replace the first state
+ * of the body, or add one */
+static int merge_by_search(vrUpdate *to, const vrUpdate *from)
+{
+    int i, k;
+    for (i = 0; i < from->n; i++) {
+        for (k = 0; k < to->n && to->body[k].id != from->body[i].id; k++) continue;
+        if (k == to->n && vrGrow((void **)&to->body, &to->cap, to->n + 1, sizeof *to->body) != 0) return -1;
+        if (k == to->n) to->n++;
+        to->body[k] = from->body[i];
+    }
+    return 0;
+}
+
+/* n states of ids drawn below nid (repeats included), each marked by its t */
+static int random_states(vrUpdate *u, int n, int nid, unsigned *seed, double mark)
+{
+    int i;
+    vrUpdate_Init(u);
+    if (vrGrow((void **)&u->body, &u->cap, n, sizeof *u->body) != 0) return -1;
+    memset(u->body, 0, (size_t)n * sizeof *u->body);
+    for (i = 0; i < n; i++) {
+        *seed = *seed * 1103515245u + 12345u;
+        u->body[i].id = (int)((*seed >> 8) % (unsigned)nid);
+        u->body[i].t = mark + i;
+    }
+    u->n = n;
+    return 0;
+}
+
+/* a whole world's update (10,000 states into 10,000 pending) is merged by
+ * a table of ids, not a search per state (quadratic: 200 M comparisons at
+ * a 10,000-object start), with the search's result, repeats and all; and
+ * a small update by the search itself */
+static int test_a_world_update_merges_as_the_search_would(void)
+{
+    static const int sizes[][3] = {{10000, 10000, 12000}, {3, 5, 40}, {0, 16, 20}, {500, 16, 700}};
+    unsigned seed = 26;
+    size_t c;
+    for (c = 0; c < sizeof sizes / sizeof sizes[0]; c++) {
+        vrUpdate to, ref, from;
+        int i, same;
+        ENSURE(random_states(&to, sizes[c][0], sizes[c][2], &seed, 0) == 0);
+        ENSURE(random_states(&from, sizes[c][1], sizes[c][2], &seed, 1e6) == 0);
+        vrUpdate_Init(&ref);
+        ENSURE(vrGrow((void **)&ref.body, &ref.cap, to.n + 1, sizeof *ref.body) == 0);
+        if (to.n) memcpy(ref.body, to.body, (size_t)to.n * sizeof *ref.body);
+        ref.n = to.n;
+        ENSURE(merge_by_search(&ref, &from) == 0);
+        ENSURE(vrUpdate_Merge(&to, &from, sizes[c][2]) == 0);
+        same = to.n == ref.n;
+        for (i = 0; same && i < to.n; i++) same = to.body[i].id == ref.body[i].id && to.body[i].t == ref.body[i].t;
+        ENSURE_MSG(same, "case %zu: %d states merged, %d by the search", c, to.n, ref.n);
+        ENSURE(c != 0 || to.n > 10000);     /* some added, some replaced */
+        vrUpdate_Free(&to), vrUpdate_Free(&ref), vrUpdate_Free(&from);
+    }
+    return 0;
+}
+
 static const vrTest tests[] = {
     TEST(test_heap_on_and_off_agree_at_10000_objects_with_edits),
     TEST(test_memory_grows_with_the_objects_not_the_pairs),
     TEST(test_serial_lazy_pairs_agree_with_workers_through_edits),
     TEST(test_a_worker_costs_memory_of_its_objects_not_its_pairs),
     TEST(test_lazy_workers_agree_with_serial_through_edits_and_a_death),
+    TEST(test_a_world_update_merges_as_the_search_would),
 };
 
 const vrTestSuite vrSuite_Scale = {"scale", tests, TEST_COUNT(tests), NULL, NULL, 0};
