@@ -574,12 +574,13 @@ static int test_a_pile_of_a_hundred_settles(void)
     return 0;
 }
 
-/* The same pile from two more seeds, 30 s each: no frame's energy rises
- * (both broke the rule at 6a904f7, before spins over their caps by
- * rounding alone were cut again; seed 0's pile above broke it until a
- * push-out's lift was paid from a ball's spin and then its speed,
- * effect.c).  Seeds 1, 4 and 11 still break it, at a frame where a
- * landing body wakes a resting heap: README, open. */
+/* The same pile from three more seeds: no frame's energy rises (6 and 9
+ * broke the rule at 6a904f7, before spins over their caps by rounding
+ * alone were cut again; seed 0's pile above broke it until a push-out's
+ * lift was paid from a ball's spin and then its speed, effect.c; seed 8
+ * broke it at frame 1992 by 9.8e-4 J while an island solve stopped early
+ * could leave a contact sinking, island.c STALL_LEFT).  Of seeds 0-15 over
+ * 30 s, 11 still breaks it (3.7e-5 J, frame 755): README, open. */
 static int seed_now;
 static void pile_seed(vrSettings *s)
 {
@@ -587,18 +588,18 @@ static void pile_seed(vrSettings *s)
     s->seed = (unsigned long long)seed_now;
 }
 
-static int test_piles_of_two_more_seeds_gain_no_energy(void)
+static int test_piles_of_three_more_seeds_gain_no_energy(void)
 {
-    static const int seeds[] = {6, 9};
+    static const int seeds[] = {6, 9, 8}, frames[] = {3000, 3000, 2000};
     char err[256];
     int k;
-    for (k = 0; k < 2; k++) {
+    for (k = 0; k < 3; k++) {
         vrWorld *w = vrScene_World(0.01, 0.01, G);
         seed_now = seeds[k];
         vrScene_Set(w, pile_seed);
         ENSURE(vrWorld_AddRandom(w, 100, err, sizeof err) == 0);
         printf("    seed %d\n", seeds[k]);
-        ENSURE(steps_losing_energy_noting(w, 3000, 1) == 0);
+        ENSURE(steps_losing_energy_noting(w, frames[k], 1) == 0);
         vrWorld_Destroy(w);
     }
     return 0;
@@ -618,7 +619,7 @@ static const vrTest tests[] = {
     TEST(test_an_elastic_newtons_cradle_sends_out_one_ball),
     TEST(test_a_settling_pile_of_fifty_gains_no_energy),
     TEST(test_a_pile_of_a_hundred_settles),
-    TEST(test_piles_of_two_more_seeds_gain_no_energy),
+    TEST(test_piles_of_three_more_seeds_gain_no_energy),
 };
 
 const vrTestSuite vrSuite_Stacking = {"stacking", tests, TEST_COUNT(tests), NULL, NULL, 0};
