@@ -282,8 +282,8 @@ static int random_states(vrUpdate *u, int n, int nid, unsigned *seed, double mar
 {
     int i;
     vrUpdate_Init(u);
-    if (vrGrow((void **)&u->body, &u->cap, n, sizeof *u->body) != 0) return -1;
-    memset(u->body, 0, (size_t)n * sizeof *u->body);
+    if (vrGrow((void **)&u->body, &u->cap, n + 1, sizeof *u->body) != 0) return -1;
+    memset(u->body, 0, (size_t)(n + 1) * sizeof *u->body);
     for (i = 0; i < n; i++) {
         *seed = *seed * 1103515245u + 12345u;
         u->body[i].id = (int)((*seed >> 8) % (unsigned)nid);
