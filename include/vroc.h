@@ -110,6 +110,7 @@ typedef struct vrSettings {
     double default_friction;  /* 0..10, 0: the friction objects created after it start with */
     double default_elasticity;/* 0..1, 1: the elasticity objects created after it start with */
     double contact_step;      /* > 0 .. 0.1 s, 1/240: the longest step between island steps (SPEC 7) */
+    double rest_speed;        /* 0..10 m/s, 0.05: a body with friction slower than this for 0.5 s rests (0: SPEC 3.5's rule alone) */
     double sound_min_speed;   /* >= 0, 0.5 m/s: the slowest impact that sounds (SPEC 8) */
     int select;               /* 0|1, 0: the hand's trigger grabs objects (1) or flies the view (SPEC 8) */
     double grab_reach;        /* 0..10 m, 0.1: how far from an object's surface the trigger grabs it */

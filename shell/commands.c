@@ -84,6 +84,7 @@ const Command sh_commands[] = {
     SETTING("collision_vol", "collision_vol = v", "volume of the collision sound", "1", G_SYSTEM, K_NUM, R_CLOSED, 0, 1, collision_vol),
     SETTING("default_friction", "default_friction = mu", "friction of the objects created after it", "0", G_SYSTEM, K_NUM, R_CLOSED, 0, 10, default_friction),
     SETTING("default_elasticity", "default_elasticity = e", "elasticity of the objects created after it", "1", G_SYSTEM, K_NUM, R_CLOSED, 0, 1, default_elasticity),
+    SETTING("rest_speed", "rest_speed = v", "a body with friction slower than this for 0.5 s rests, m/s (0: only a still one)", "0.05", G_EXT, K_NUM, R_CLOSED, 0, 10, rest_speed),
     SETTING("contact_step", "contact_step = s", "longest step between island steps, s (contacts solved together)", "0.0041667", G_EXT, K_NUM, R_CLOSED, 1e-5, 0.1, contact_step),
 
     VERB("save", "save FILE", "write the whole state as a script a fresh vroc reads to go on bit for bit", G_EXT, F_PATH, R_ANY, 0, 0, run_save),

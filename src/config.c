@@ -46,6 +46,7 @@ vrSettings vrSettings_Default(void)
     s.collision_vol = 1.0;
     s.default_elasticity = 1.0;
     s.contact_step = 1.0 / 240;
+    s.rest_speed = 0.05;
     s.sound_min_speed = 0.5;
     s.grab_reach = 0.1;
     s.fly_speed = 1.0;
@@ -101,6 +102,7 @@ static int check_times(const vrSettings *s, char *err, size_t n)
                                    "(at most %d): raise internal_step or lower time_step",
                            s->internal_step, s->time_step / s->internal_step, s->time_step, VR_FRAME_STEPS_MAX);
     if (bad_range(s->contact_step, 1e-5, 0.1, 0)) return out_of_range(err, n, "contact_step", "1e-5..0.1", s->contact_step);
+    if (bad_range(s->rest_speed, 0, 10, 0)) return out_of_range(err, n, "rest_speed", "0..10", s->rest_speed);
     return 0;
 }
 

@@ -10,7 +10,7 @@
 #define STATE_KEYS "x v q L rest hit contact island"
 #define POINT_KEYS "p0 impulse0 p1 impulse1 p2 impulse2 p3 impulse3 p4 impulse4 p5 impulse5 p6 impulse6 p7 impulse7"
 static const vrSaveSection sections[] = {
-    {"body", "t0 " STATE_KEYS " quiet owed frame_x frame_q", 1, vrSave_WriteBody, vrSave_ReadBody},
+    {"body", "t0 " STATE_KEYS " quiet slow slow_start owed frame_x frame_q", 1, vrSave_WriteBody, vrSave_ReadBody},
     {"clock", "t frames t_base frames_base instant instant_t settings_due", 0, vrSave_WriteClock, vrSave_ReadClock},
     {"counters", "collisions island_steps island_contacts checks heap_pops klu_solves klu_refactors klu_factors subframes clamps",
      0, vrSave_WriteCounters, vrSave_ReadCounters},

@@ -87,6 +87,7 @@ void vrSave_WriteBody(vrWorld *w, int id, FILE *out)
     else if (o->live) {
         vrBody_CaptureAnchor(&o->body, &s.anchor);
         s.quiet_frames = o->quiet_frames, s.overlap_owed = o->overlap_owed;
+        s.slow_frames = o->slow_frames, s.slow_start = o->slow_start;
         s.have_frame_pose = o->have_frame_pose, s.frame_pose = o->frame_pose;
     } else
         return;                          /* not in the run yet: its definition places it */
@@ -94,6 +95,8 @@ void vrSave_WriteBody(vrWorld *w, int id, FILE *out)
     vrSave_Number(out, "t0", s.anchor.t);
     put_state(out, &s.anchor);
     vrSave_Integer(out, "quiet", s.quiet_frames);
+    vrSave_Integer(out, "slow", s.slow_frames);
+    vrSave_Number(out, "slow_start", s.slow_start);
     vrSave_Integer(out, "owed", s.overlap_owed);
     if (s.have_frame_pose) {
         put_vec(out, "frame_x", s.frame_pose.p);
@@ -113,6 +116,14 @@ static int read_frame_pose(vrSaveLine *l, vrSavedBody *s, char *err, size_t n)
     return 0;
 }
 
+/* the rest test's slow window (rest.c): files saved before it have none */
+static int read_slow(vrSaveLine *l, vrSavedBody *s, char *err, size_t n)
+{
+    if (!vrSaveLine_Has(l, "slow") && !vrSaveLine_Has(l, "slow_start")) return 0;
+    return get_int(l, "slow", 0, 1000000000, &s->slow_frames, err, n)
+        || vrSaveLine_Numbers(l, "slow_start", &s->slow_start, 1, 0, err, n) ? -1 : 0;
+}
+
 int vrSave_ReadBody(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n)
 {
     vrObject *o = vrWorld_Object(w, id);
@@ -125,6 +136,7 @@ int vrSave_ReadBody(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n)
     s.anchor.raw = 1;
     if (vrSaveLine_Numbers(l, "t0", &s.anchor.t, 1, 0, err, n) || get_state(l, id, &s.anchor, err, n)
         || get_int(l, "quiet", 0, 1000000000, &s.quiet_frames, err, n)
+        || read_slow(l, &s, err, n)
         || get_int(l, "owed", 0, 1, &s.overlap_owed, err, n) || read_frame_pose(l, &s, err, n))
         return -1;
     if (!o->saved && !(o->saved = malloc(sizeof *o->saved))) {

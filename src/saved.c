@@ -10,4 +10,6 @@ void vrSaved_Place(vrObject *o, const vrFlight *f)
     o->frame_pose = s->frame_pose;
     o->have_frame_pose = s->have_frame_pose;
     o->quiet_frames = s->quiet_frames;
+    o->slow_frames = s->slow_frames;
+    o->slow_start = s->slow_start;
 }

@@ -12,7 +12,8 @@ typedef struct vrSavedBody {
     vrBodyState anchor;       /* raw: the body's anchor bit for bit, with its rest and island */
     vrPose frame_pose;        /* the last frame end's pose (rest, SPEC 3.5) */
     int have_frame_pose;
-    int quiet_frames;
+    int quiet_frames, slow_frames; /* the rest test's window (rest.c) */
+    double slow_start;
     int overlap_owed;         /* a start check owed (SPEC 1.4) */
 } vrSavedBody;
 

@@ -26,7 +26,9 @@ typedef struct vrObject {
                                 checked: its pairs are checked at the next (SPEC 1.4) */
     vrPose frame_pose;       /* at the end of the last frame (SPEC 3.5) */
     int have_frame_pose;
-    int quiet_frames;        /* frames in a row it qualified for rest (rest.c) */
+    int quiet_frames;        /* frames in a row it was still, not speeding up (rest.c) */
+    int slow_frames;         /* frames in a row it was slow, not speeding up (rest.c) */
+    double slow_start;       /* its motion over the first frame of that window (m) */
     struct vrSavedBody *saved; /* read from a saved file, until it goes live (saved.h) */
 } vrObject;
 

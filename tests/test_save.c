@@ -52,8 +52,11 @@ static int test_a_state_line_reads_vectors_hex_floats_and_refuses_nan(void)
     return 0;
 }
 
+static void set_friction(vrObjectDef *d, const void *mu) { d->friction = *(const double *)mu; }
+
 static int test_a_pile_saved_mid_run_goes_on_bit_for_bit_in_a_fresh_world(void)
 {
+    const double mu = 0.6;
     vrWorld *a = vrScene_World(0.02, 0.02, 9.8), *b = vrWorld_Create();
     vrStats sa, sb;
     char *text = NULL;
@@ -65,8 +68,11 @@ static int test_a_pile_saved_mid_run_goes_on_bit_for_bit_in_a_fresh_world(void)
     int k;
     set.default_friction = 0.6;
     ENSURE(vrWorld_SetSettings(a, &set, err, sizeof err) == 0);
-    vrScene_Box(a, "floor", vec3_make(2, 2, 0.1), vec3_make(0, 0, 0), -1, 0.2);
-    for (k = 0; k < 4; k++) snprintf(name, sizeof name, "b%d", k), vrScene_Box(a, name, vec3_make(0.1, 0.1, 0.1), vec3_make(0.01 * k, 0, 0.2 + 0.21 * k), 1, 0.2);
+    vrScene_Edit(a, vrScene_Box(a, "floor", vec3_make(2, 2, 0.1), vec3_make(0, 0, 0), -1, 0.2), set_friction, &mu);
+    for (k = 0; k < 4; k++) {   /* with friction: frictionless, the stack's slight tilts let it slide apart */
+        snprintf(name, sizeof name, "b%d", k);
+        vrScene_Edit(a, vrScene_Box(a, name, vec3_make(0.1, 0.1, 0.1), vec3_make(0.01 * k, 0, 0.2 + 0.21 * k), 1, 0.2), set_friction, &mu);
+    }
     gone = vrScene_Sphere(a, "gone", 0.1, vec3_make(1, 0, 0.5), vec3_make(0, 0, 0), 1, 0.5);
     vrScene_Sphere(a, "ball", 0.1, vec3_make(-1, 0, 0.5), vec3_make(0.5, 0, 0), 1, 0.5);
     ENSURE(vrScene_Step(a, 30) == 0);

@@ -2,7 +2,9 @@
  * (SPEC 7), each against physics: a pyramid and a tower that stand and
  * rest, three offset boxes that neither tip nor skate, dominoes that
  * topple, a ball that ends rolling at 5/7 of its speed, a box that holds
- * on a slope below atan mu and slides at g (sin - mu cos) above it, a
+ * on a slope below atan mu and slides at g (sin - mu cos) above it (and is
+ * not frozen as it sets off slowly), a ball rolling slower than rest_speed
+ * that comes to rest and a faster one that rolls on, a
  * heavy box on light balls at the cost of a light one, an icosahedron that
  * tips onto a face, an elastic Newton's cradle that sends out one ball,
  * and a pile of a hundred that settles, none inside another, with the
@@ -364,6 +366,74 @@ static int test_a_box_holds_on_a_gentle_slope_and_slides_down_a_steep_one(void)
     return 0;
 }
 
+/* A box on a 0.3 friction slope just past atan 0.3, accelerating at
+ * a = 0.05 m/s^2 from rest: it gains 5e-6 m a frame, so each frame it is
+ * still by SPEC 3.5's measure (under 1e-4 m) and slow; the rest test must
+ * see that it speeds up (rest.c), or it is frozen where it was put.  It
+ * slides at s = a t^2 / 2 + a h t / 2 as on the steep slope above. */
+static int test_a_box_setting_off_slowly_down_a_slope_is_not_frozen(void)
+{
+    double mu = 0.3, a = 0.05, th = atan(mu) + asin(a / (G * sqrt(1 + mu * mu))), t = 2.0, h = 0.01 / 3;
+    vrWorld *w = vrScene_World(0.01, 0.01, G);
+    vrObjectId b;
+    vrObjectState s;
+    double want = 0.5 * a * t * t + 0.5 * a * h * t;
+    ramp(w, th, mu);
+    b = box_on_ramp(w, th, mu);
+    ENSURE(vrScene_Step(w, 200) == 0);
+    s = vrScene_State(w, b);
+    printf("    slope %.4f deg: %.9f m in 2 s, a t^2 / 2 + a h t / 2 = %.9f; %s\n", th * 180 / VR_PI,
+           down_slope(&s, th), want, s.state == VR_STATE_REST ? "resting" : "moving");
+    ENSURE(s.state != VR_STATE_REST);
+    ENSURE_NEAR(down_slope(&s, th), want, 1e-6);
+    ENSURE_NEAR(vec3_dot(vrScene_LinearVel(&s), downhill(th)), a * t, 1e-6);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
+static void still_rule_only(vrSettings *s) { s->rest_speed = 0; }
+
+/* a ball of radius 0.1 rolling on the floor at v (w = v / r): the frame it
+ * came to rest at (-1: none in `frames`), and where it was then */
+static int rolled_until_rest(double v, int frames, int still_only, double *x)
+{
+    vrWorld *w = vrScene_World(0.01, 0.01, G);
+    double spin[3] = {0, 0, 0};
+    vrObjectId b;
+    int f;
+    spin[1] = v / 0.1;
+    if (still_only) vrScene_Set(w, still_rule_only);
+    floor_of(w, 0.5);
+    b = ball(w, "ball", 0.1, vec3_make(0, 0, 0.1 + GC), vec3_make(v, 0, 0), 1, 0, 0.5);
+    vrScene_Edit(w, b, vrScene_SetSpin, spin);
+    for (f = 1; f <= frames; f++) {
+        if (vrScene_Step(w, 1) != 0) f = frames;
+        *x = vrScene_State(w, b).position[0];
+        if (vrScene_State(w, b).state == VR_STATE_REST) break;
+    }
+    vrWorld_Destroy(w);
+    return f <= frames ? f : -1;
+}
+
+/* A ball rolling at 2 cm/s (2e-4 m a frame, never still by SPEC 3.5's
+ * measure) comes to rest once it has been slower than rest_speed (5 cm/s)
+ * for half a second, where rolling without loss took it (x = v t); with
+ * rest_speed = 0 it rolls on, and so does one at 10 cm/s. */
+static int test_a_slowly_rolling_ball_comes_to_rest_and_a_faster_one_rolls_on(void)
+{
+    double x = 0, x_still = 0, x_fast = 0;
+    int rest = rolled_until_rest(0.02, 300, 0, &x), still = rolled_until_rest(0.02, 300, 1, &x_still);
+    int fast = rolled_until_rest(0.1, 300, 0, &x_fast);
+    printf("    2 cm/s: rests at frame %d, x %.9f (v t = %.9f); rest_speed 0: %d, x %.6f; 10 cm/s: %d, x %.6f\n", rest,
+           x, 0.02 * rest * 0.01, still, x_still, fast, x_fast);
+    ENSURE(rest >= 50 && rest <= 55);
+    ENSURE_NEAR(x, 0.02 * rest * 0.01, 1e-9);
+    ENSURE(still == -1 && fast == -1);
+    ENSURE_NEAR(x_still, 0.02 * 3, 1e-9);
+    ENSURE_NEAR(x_fast, 0.1 * 3, 1e-9);
+    return 0;
+}
+
 /* ---- mass ratios -------------------------------------------------------------------------------- */
 
 /* a box of mass m dropped 5 cm onto four 1 g balls; the island contacts
@@ -614,6 +684,8 @@ static const vrTest tests[] = {
     TEST(test_a_launched_ball_ends_rolling_at_five_sevenths),
     TEST(test_a_ball_spinning_on_the_floor_stops),
     TEST(test_a_box_holds_on_a_gentle_slope_and_slides_down_a_steep_one),
+    TEST(test_a_box_setting_off_slowly_down_a_slope_is_not_frozen),
+    TEST(test_a_slowly_rolling_ball_comes_to_rest_and_a_faster_one_rolls_on),
     TEST(test_a_heavy_box_rests_on_light_balls_at_the_cost_of_a_light_one),
     TEST(test_an_icosahedron_tips_onto_a_face),
     TEST(test_an_elastic_newtons_cradle_sends_out_one_ball),
