@@ -31,6 +31,7 @@
 #include "config.h"
 #include "ownerset.h"
 #include "owners.h"
+#include "contact_set.h"
 
 /* Gauss-Seidel sweeps at most (island.c).  A settling pile's big islands
  * end at the cap whatever it is (they converge to ~1e-5 m/s in 64); warm
@@ -45,6 +46,12 @@ static int by_pair(const void *x, const void *y)
     const vrTouch *a = x, *b = y;
     if (a->a != b->a) return a->a < b->a ? -1 : 1;
     return a->b < b->b ? -1 : a->b > b->b;
+}
+
+static int by_id(const void *x, const void *y)
+{
+    int a = *(const int *)x, b = *(const int *)y;
+    return (a > b) - (a < b);
 }
 
 static int root(int *parent, int i)
@@ -210,14 +217,15 @@ static int solve_one(vrWorld *w, Island *is, const int *parent, int r, double t,
 }
 
 /* a body that flew the last step in contact and touches nothing now
- * flies under the force again from t (its gravity was paid up to t) */
+ * flies under the force again from t (its gravity was paid up to t); the
+ * contact set holds every body in contact, in id order */
 static int leave_contact(vrWorld *w, const int *in_island, double t, vrUpdate *up)
 {
-    int i;
-    for (i = 0; i < w->table.n; i++) {
+    int k;
+    for (k = 0; k < w->ncontact_ids; k++) {
+        int i = w->contact_ids[k];
         vrObject *o = w->table.obj[i];
         vrBodyState *st;
-        /* NOLINTNEXTLINE(clang-analyzer-core.uninitialized.Branch): step() set in_island for every object first */
         if (!o || !o->live || !o->body.contact || o->body.resting || in_island[i]) continue;
         if (!(st = vrUpdate_Body(up, &o->body, t))) return -1;
         st->contact = 0;
@@ -226,21 +234,39 @@ static int leave_contact(vrWorld *w, const int *in_island, double t, vrUpdate *u
     return 0;
 }
 
+/* The union-find of the touching pairs (those not leaving) over moving
+ * bodies: parent[] and in_island[] set for every id of a touch and of the
+ * contact set (the rest of those arrays is not read).  The moving ids of
+ * the touches, each once in id order, into ids; their count. */
+static int islands_of(vrWorld *w, int *parent, int *in_island, int *ids)
+{
+    int k, n = 0;
+    for (k = 0; k < w->ncontact_ids; k++) in_island[w->contact_ids[k]] = 0;
+    for (k = 0; k < w->touches.n; k++) {
+        const vrTouch *c = &w->touches.t[k];
+        parent[c->a] = c->a, parent[c->b] = c->b;
+        in_island[c->a] = in_island[c->b] = 0;
+    }
+    for (k = 0; k < w->touches.n; k++) {
+        const vrTouch *c = &w->touches.t[k];
+        int e, x[2];
+        if (c->leaving > 0) continue;
+        if (moving(w, c->a) && moving(w, c->b)) join(parent, c->a, c->b);
+        x[0] = c->a, x[1] = c->b;
+        for (e = 0; e < 2; e++)
+            if (moving(w, x[e]) && !in_island[x[e]]) in_island[x[e]] = 1, ids[n++] = x[e];
+    }
+    if (n > 1) qsort(ids, (size_t)n, sizeof *ids, by_id);
+    return n;
+}
+
 static int step(vrWorld *w, int *parent, int *in_island, double t, double h, vrUpdate *up)
 {
     Island is;
-    int i, k, rc = 0;
+    int i, rc = 0, n = islands_of(w, parent, in_island, w->isl_ids);
     memset(&is, 0, sizeof is);
-    for (i = 0; i < w->table.n; i++) parent[i] = i, in_island[i] = 0;
-    for (k = 0; k < w->touches.n; k++) {
-        const vrTouch *c = &w->touches.t[k];
-        if (c->leaving > 0) continue;
-        if (moving(w, c->a) && moving(w, c->b)) join(parent, c->a, c->b);
-        in_island[c->a] |= moving(w, c->a);
-        in_island[c->b] |= moving(w, c->b);
-    }
-    for (i = 0; i < w->table.n && rc == 0; i++)
-        if (in_island[i] && root(parent, i) == i) rc = solve_one(w, &is, parent, i, t, h, up);
+    for (i = 0; i < n && rc == 0; i++)
+        if (root(parent, w->isl_ids[i]) == w->isl_ids[i]) rc = solve_one(w, &is, parent, w->isl_ids[i], t, h, up);
     if (rc == 0) rc = leave_contact(w, in_island, t, up);
     free(is.id);
     free(is.body);
@@ -262,13 +288,9 @@ static int gather(vrWorld *w, double t, double h, char *err, size_t n)
 static int instant(vrWorld *w, int *parent, int *in_island, double t, int a, int b, vrUpdate *up)
 {
     Island is;
-    int k, ra, rb, rc = 0;
+    int ra, rb, rc = 0;
     memset(&is, 0, sizeof is);
-    for (k = 0; k < w->table.n; k++) parent[k] = k, in_island[k] = 0;
-    for (k = 0; k < w->touches.n; k++) {
-        const vrTouch *c = &w->touches.t[k];
-        if (c->leaving <= 0 && moving(w, c->a) && moving(w, c->b)) join(parent, c->a, c->b);
-    }
+    islands_of(w, parent, in_island, w->isl_ids);   /* the pair (a, b) is one of the touches */
     ra = a >= 0 && moving(w, a) ? root(parent, a) : -1;   /* a, b < 0: no pair (clang-tidy) */
     rb = b >= 0 && moving(w, b) ? root(parent, b) : -1;
     if (ra >= 0) rc = solve_one(w, &is, parent, ra, t, 0, up);
@@ -309,9 +331,7 @@ static void velocities_after(vrWorld *w, const vrUpdate *up, const int *slot, in
  * back; -1 when out of memory. */
 static int turned_back(vrWorld *w, const vrUpdate *up, double t)
 {
-    int *slot = malloc(((size_t)w->table.n + 1) * sizeof *slot), i, k, count = 0;
-    if (!slot) return -1;
-    for (i = 0; i < w->table.n; i++) slot[i] = -1;
+    int *slot = w->isl_slot, i, k, count = 0;
     for (i = 0; i < up->n; i++) slot[up->body[i].id] = i;
     for (k = 0; k < w->touches.n; k++) {
         vrTouch *c = &w->touches.t[k];
@@ -326,7 +346,7 @@ static int turned_back(vrWorld *w, const vrUpdate *up, double t)
         }
         if (i < c->npoints) c->leaving = -1, count++;
     }
-    free(slot);
+    for (i = 0; i < up->n; i++) slot[up->body[i].id] = -1;   /* as it was: -1 everywhere */
     return count;
 }
 
@@ -336,10 +356,10 @@ static int turned_back(vrWorld *w, const vrUpdate *up, double t)
  * its solve turns leaving pairs back; the counts kept are the last solve's */
 static int solve_all(vrWorld *w, double t, double h, int a, int b, char *err, size_t n)
 {
-    int *parent = malloc(((size_t)w->table.n + 1) * sizeof *parent);
-    int *in_island = malloc(((size_t)w->table.n + 1) * sizeof *in_island), round, r = -1;
+    int round, r = -1, ready = vrIslandScratch_Reserve(w) == 0 && vrContactSet_Prune(w) == 0;
+    int *parent = w->isl_parent, *in_island = w->isl_in;
     long long collisions = w->collisions, steps = w->island_steps, contacts = w->island_contacts;
-    for (round = 0; parent && in_island && round <= TURN_BACK_ROUNDS; round++) {
+    for (round = 0; ready && round <= TURN_BACK_ROUNDS; round++) {
         w->collisions = collisions, w->island_steps = steps, w->island_contacts = contacts;
         w->update.n = 0;
         w->warm_next.n = 0;
@@ -347,8 +367,6 @@ static int solve_all(vrWorld *w, double t, double h, int a, int b, char *err, si
         if (r != 0 || round == TURN_BACK_ROUNDS || (r = turned_back(w, &w->update, t)) <= 0) break;
         r = 0;
     }
-    free(parent);
-    free(in_island);
     if (r != 0 || vrWorld_ApplyUpdate(w, &w->update) != 0) return vrGeom_Fail(err, n, "out of memory or a bad island");
     if (h > 0) {              /* the step's impulses start the next one's solve */
         vrWarm keep = w->warm;

@@ -15,6 +15,7 @@
 #include "config.h"
 #include "owners.h"
 #include "rest.h"
+#include "contact_set.h"
 #include "parallel/sgp.h"
 
 static void retire_owner(vrWorld *w)
@@ -84,7 +85,10 @@ int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up)
     int i;
     if (up->n == 0) return 0;
     if (vrRest_WakeDependents(w, up, up->body[0].t) != 0) return -1;
-    for (i = 0; i < up->n; i++) w->clamps += vrBody_Apply(&w->table.obj[up->body[i].id]->body, &up->body[i], &f);
+    for (i = 0; i < up->n; i++) {
+        w->clamps += vrBody_Apply(&w->table.obj[up->body[i].id]->body, &up->body[i], &f);
+        if (up->body[i].contact && vrContactSet_Note(w, up->body[i].id) != 0) return -1;
+    }
     return vrUpdate_Merge(&w->pending, up, w->table.n);
 }
 

@@ -18,6 +18,7 @@ vrWorld *vrWorld_Create(void)
     if (!w) return NULL;
     w->s = vrSettings_Default();
     w->instant_t = -INFINITY;
+    w->contact_structure = -1;   /* the contact set is found at the first island step */
     vrUpdate_Init(&w->update);
     vrUpdate_Init(&w->pending);
     vrSplitmix_Seed(&w->rng, w->s.seed);
@@ -50,6 +51,11 @@ void vrWorld_Destroy(vrWorld *w)
     vrUpdate_Free(&w->update);
     vrUpdate_Free(&w->pending);
     vrTouches_Free(&w->touches);
+    free(w->contact_ids);
+    free(w->isl_parent);
+    free(w->isl_in);
+    free(w->isl_slot);
+    free(w->isl_ids);
     vrWarm_Free(&w->warm);
     vrWarm_Free(&w->warm_next);
     vrWorld_FreeTrackers(w);
@@ -71,6 +77,7 @@ void vrWorld_Restart(vrWorld *w)
     w->params_dirty = 0;
     w->instant = 0;
     w->instant_t = -INFINITY;
+    w->contact_structure = -1;   /* the contact set is found at the first island step */
     vrWorld_ClearTracker(w, VR_DEVICE_HEAD);   /* track time was time since `track` */
     vrWorld_ClearTracker(w, VR_DEVICE_HAND);
     vrSounds_Clear(&w->sounds);

@@ -63,6 +63,15 @@ struct vrWorld {
     int *changed;            /* scratch: ids changed by an update */
     int nchanged, changedcap;
     vrTouches touches;       /* scratch: an island step's touching pairs */
+    /* island_step.c: the ids of bodies that may be in a contact step (every
+     * one that is, and others; found again from every object when
+     * structure is no longer contact_structure), and its scratch by
+     * object id, set only where a step uses it */
+    int *contact_ids;
+    int ncontact_ids, contact_idcap;
+    long contact_structure;
+    int *isl_parent, *isl_in, *isl_slot, *isl_ids;
+    int isl_cap;
     vrWarm warm, warm_next;  /* the last island step's impulses (warm.h); the step's being kept */
     /* statistics (SPEC 1.3, 7) */
     long subframes;

@@ -31,6 +31,7 @@
 #include "sgp.h"
 #include "spawn.h"
 #include "wire.h"
+#include "contact_set.h"
 #include "sound_lcm.h"
 #include "vroc_advance_t.h"
 #include "vroc_contacts_t.h"
@@ -45,6 +46,7 @@ static int recover(vrWorld *w, char *err, size_t n)
     int i;
     for (i = 0; i < s->snap.n; i++)
         vrBody_Apply(&w->table.obj[s->snap.body[i].id]->body, &s->snap.body[i], &f);
+    vrContactSet_Lost(w);
     w->collisions = s->snap_collisions;
     w->island_steps = s->snap_island_steps;
     w->island_contacts = s->snap_island_contacts;
