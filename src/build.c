@@ -132,7 +132,7 @@ int vrObject_Place(vrObject *o, double t, const vrFlight *f)
     o->body.hit = 0;
     clamps = vrBody_Anchor(&o->body, t, vrVec3_Of(o->def.translate), vrVec3_Of(o->def.linear_vel), q,
                            vrBody_MomentumAt(&o->body, q, vrVec3_Of(o->def.angular_vel)), f);
-    o->have_frame_pose = 0;
+    o->have_frame_pose = o->frame_pose_lazy = 0;
     if (o->saved) vrSaved_Place(o, f);   /* SPEC 11: a saved run goes on where it was */
     return clamps;
 }

@@ -86,6 +86,7 @@ int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up)
     if (up->n == 0) return 0;
     if (vrRest_WakeDependents(w, up, up->body[0].t) != 0) return -1;
     for (i = 0; i < up->n; i++) {
+        vrRest_KeepFramePose(w, w->table.obj[up->body[i].id]);   /* before its anchor moves */
         w->clamps += vrBody_Apply(&w->table.obj[up->body[i].id]->body, &up->body[i], &f);
         if (up->body[i].contact && vrContactSet_Note(w, up->body[i].id) != 0) return -1;
     }

@@ -16,6 +16,11 @@ int vrRest_WakeDependents(vrWorld *w, vrUpdate *up, double t);
 int vrRest_WakeIsland(vrWorld *w, int island, vrUpdate *up, double t);
 /* frame end: puts to rest the islands that qualify; fills up with the new states */
 int vrRest_FrameEnd(vrWorld *w, vrUpdate *up);
+/* frame end: the poses the next frame end's rest test compares with are
+ * those of now (taken lazily: vrRest_KeepFramePose) */
 void vrRest_RememberFramePoses(vrWorld *w);
+/* o's pose at the last frame end, from its anchor, if not yet taken:
+ * before its anchor changes, and wherever o->frame_pose is read */
+void vrRest_KeepFramePose(const vrWorld *w, vrObject *o);
 
 #endif

@@ -12,6 +12,7 @@
 #include "grow.h"
 #include "saved.h"
 #include "save_sections.h"
+#include "rest.h"
 
 static void put_vec(FILE *out, const char *key, vec3 v)
 {
@@ -88,6 +89,7 @@ void vrSave_WriteBody(vrWorld *w, int id, FILE *out)
         vrBody_CaptureAnchor(&o->body, &s.anchor);
         s.quiet_frames = o->quiet_frames, s.overlap_owed = o->overlap_owed;
         s.slow_frames = o->slow_frames, s.slow_start = o->slow_start;
+        vrRest_KeepFramePose(w, o);
         s.have_frame_pose = o->have_frame_pose, s.frame_pose = o->frame_pose;
     } else
         return;                          /* not in the run yet: its definition places it */

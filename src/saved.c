@@ -9,6 +9,7 @@ void vrSaved_Place(vrObject *o, const vrFlight *f)
     vrBody_Apply(&o->body, &st, f);
     o->frame_pose = s->frame_pose;
     o->have_frame_pose = s->have_frame_pose;
+    o->frame_pose_lazy = 0;   /* the file's pose, taken */
     o->quiet_frames = s->quiet_frames;
     o->slow_frames = s->slow_frames;
     o->slow_start = s->slow_start;

@@ -26,6 +26,8 @@ typedef struct vrObject {
                                 checked: its pairs are checked at the next (SPEC 1.4) */
     vrPose frame_pose;       /* at the end of the last frame (SPEC 3.5) */
     int have_frame_pose;
+    int frame_pose_lazy;     /* frame_pose not taken yet: the pose at the world's
+                                frame_pose_t from the anchor it has (rest.c) */
     int quiet_frames;        /* frames in a row it was still, not speeding up (rest.c) */
     int slow_frames;         /* frames in a row it was slow, not speeding up (rest.c) */
     double slow_start;       /* its motion over the first frame of that window (m) */

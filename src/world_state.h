@@ -54,6 +54,7 @@ struct vrWorld {
     vrOwnerStats retired;    /* statistics of owners that are gone */
     int may_rest;            /* resting bodies, or more: 0 means none (rest begins only at
                                 frame ends, where they are counted) */
+    double frame_pose_t;     /* the last frame end, where lazy frame poses are taken (rest.c) */
     vrBody **dyn;            /* live dynamic bodies, for the grid */
     int ndyn, dyncap;
     int *dyn_slot;           /* by object id below ndyn_slot: its index in dyn, or -1 */

@@ -22,6 +22,7 @@
 #include "event.h"
 #include "grow.h"
 #include "contact_set.h"
+#include "rest.h"
 
 #define BIG 10000
 
@@ -355,6 +356,41 @@ static int test_the_contact_set_holds_every_body_in_contact_through_edits_and_a_
     return 0;
 }
 
+/* every object's frame pose taken now, as every frame end once did */
+static void take_frame_poses(vrWorld *w)
+{
+    int i;
+    for (i = 0; i < w->table.n; i++)
+        if (w->table.obj[i]) vrRest_KeepFramePose(w, w->table.obj[i]);
+}
+
+/* Frame poses are taken lazily (rest.c): from a body's anchor when the
+ * rest test or a save asks, or before an update moves the anchor.  A pile
+ * of 60 settling with friction, frame by frame, beside one whose poses
+ * are all taken at every frame end: the same bits at every frame, and
+ * bodies come to rest in both. */
+static int test_frame_poses_taken_lazily_rest_a_pile_as_taken_at_every_frame_end(void)
+{
+    vrSettings s = vrSettings_Default();
+    vrWorld *lazy, *eager;
+    int f;
+    s.room = 4, s.seed = 5, s.time_step = 0.01, s.collision_dist = 0.01, s.force_mag = 9.8;
+    s.default_friction = 0.5, s.default_elasticity = 0.5;
+    lazy = vrScene_RandomRoom(&s, 60);
+    eager = vrScene_RandomRoom(&s, 60);
+    ENSURE(lazy && eager);
+    for (f = 1; f <= 600; f++) {
+        ENSURE(vrScene_Step(lazy, 1) == 0 && vrScene_Step(eager, 1) == 0);
+        take_frame_poses(eager);
+        ENSURE_MSG(vrScene_DumpHash(lazy) == vrScene_DumpHash(eager), "frame %d: the runs differ", f);
+    }
+    printf("    600 frames alike, %d of 60 at rest\n", vrScene_Stats(lazy).resting);
+    ENSURE(vrScene_Stats(lazy).resting >= 30);
+    vrWorld_Destroy(lazy);
+    vrWorld_Destroy(eager);
+    return 0;
+}
+
 static int test_a_world_update_merges_as_the_search_would(void)
 {
     static const int sizes[][3] = {{10000, 10000, 12000}, {3, 5, 40}, {0, 16, 20}, {500, 16, 700}};
@@ -388,6 +424,7 @@ static const vrTest tests[] = {
     TEST(test_lazy_workers_agree_with_serial_through_edits_and_a_death),
     TEST(test_a_world_update_merges_as_the_search_would),
     TEST(test_the_contact_set_holds_every_body_in_contact_through_edits_and_a_save),
+    TEST(test_frame_poses_taken_lazily_rest_a_pile_as_taken_at_every_frame_end),
 };
 
 const vrTestSuite vrSuite_Scale = {"scale", tests, TEST_COUNT(tests), NULL, NULL, 0};

@@ -32,6 +32,7 @@
 #include "spawn.h"
 #include "wire.h"
 #include "contact_set.h"
+#include "rest.h"
 #include "sound_lcm.h"
 #include "vroc_advance_t.h"
 #include "vroc_contacts_t.h"
@@ -44,8 +45,10 @@ static int recover(vrWorld *w, char *err, size_t n)
     vrSgp *s = w->sgp;
     vrFlight f = vrSettings_Flight(&w->s);
     int i;
-    for (i = 0; i < s->snap.n; i++)
+    for (i = 0; i < s->snap.n; i++) {
+        vrRest_KeepFramePose(w, w->table.obj[s->snap.body[i].id]);
         vrBody_Apply(&w->table.obj[s->snap.body[i].id]->body, &s->snap.body[i], &f);
+    }
     vrContactSet_Lost(w);
     w->collisions = s->snap_collisions;
     w->island_steps = s->snap_island_steps;
