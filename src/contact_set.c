@@ -11,7 +11,7 @@
  * when the world's structure moved (objects made, deleted, started, read
  * from a saved file) or a worker's frame was undone (vrContactSet_Lost).
  *   note, prune, rescan   the set
- *   vrContactSet_*, vrIslandScratch_Reserve
+ *   vrIds_Sort, vrContactSet_*, vrIslandScratch_Reserve
  */
 #include <stdlib.h>
 #include "contact_set.h"
@@ -21,6 +21,11 @@ static int by_id(const void *x, const void *y)
 {
     int a = *(const int *)x, b = *(const int *)y;
     return (a > b) - (a < b);
+}
+
+void vrIds_Sort(int *ids, int n)
+{
+    if (n > 1) qsort(ids, (size_t)n, sizeof *ids, by_id);
 }
 
 int vrContactSet_Note(vrWorld *w, int id)
@@ -54,7 +59,7 @@ int vrContactSet_Prune(vrWorld *w)
 {
     int i, k = 0;
     if (w->contact_structure != w->structure) return rescan(w);
-    if (w->ncontact_ids > 1) qsort(w->contact_ids, (size_t)w->ncontact_ids, sizeof *w->contact_ids, by_id);
+    vrIds_Sort(w->contact_ids, w->ncontact_ids);
     for (i = 0; i < w->ncontact_ids; i++) {
         int id = w->contact_ids[i];
         if ((k == 0 || w->contact_ids[k - 1] != id) && in_contact(w, id)) w->contact_ids[k++] = id;

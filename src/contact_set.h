@@ -5,6 +5,8 @@
 
 #include "world_state.h"
 
+/* object ids in ascending order */
+void vrIds_Sort(int *ids, int n);
 /* body id's state was applied with contact set: it joins the set */
 int vrContactSet_Note(vrWorld *w, int id);
 /* states were applied behind the set's back (a frame undone): the next

@@ -48,12 +48,6 @@ static int by_pair(const void *x, const void *y)
     return a->b < b->b ? -1 : a->b > b->b;
 }
 
-static int by_id(const void *x, const void *y)
-{
-    int a = *(const int *)x, b = *(const int *)y;
-    return (a > b) - (a < b);
-}
-
 static int root(int *parent, int i)
 {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
@@ -237,7 +231,8 @@ static int leave_contact(vrWorld *w, const int *in_island, double t, vrUpdate *u
 /* The union-find of the touching pairs (those not leaving) over moving
  * bodies: parent[] and in_island[] set for every id of a touch and of the
  * contact set (the rest of those arrays is not read).  The moving ids of
- * the touches, each once in id order, into ids; their count. */
+ * the touches, each once in id order, into ids (NULL: not wanted); their
+ * count. */
 static int islands_of(vrWorld *w, int *parent, int *in_island, int *ids)
 {
     int k, n = 0;
@@ -254,9 +249,12 @@ static int islands_of(vrWorld *w, int *parent, int *in_island, int *ids)
         if (moving(w, c->a) && moving(w, c->b)) join(parent, c->a, c->b);
         x[0] = c->a, x[1] = c->b;
         for (e = 0; e < 2; e++)
-            if (moving(w, x[e]) && !in_island[x[e]]) in_island[x[e]] = 1, ids[n++] = x[e];
+            if (moving(w, x[e]) && !in_island[x[e]]) {
+                in_island[x[e]] = 1;
+                if (ids) ids[n++] = x[e];
+            }
     }
-    if (n > 1) qsort(ids, (size_t)n, sizeof *ids, by_id);
+    if (ids) vrIds_Sort(ids, n);
     return n;
 }
 
@@ -290,7 +288,7 @@ static int instant(vrWorld *w, int *parent, int *in_island, double t, int a, int
     Island is;
     int ra, rb, rc = 0;
     memset(&is, 0, sizeof is);
-    islands_of(w, parent, in_island, w->isl_ids);   /* the pair (a, b) is one of the touches */
+    islands_of(w, parent, in_island, NULL);   /* the pair (a, b) is one of the touches */
     ra = a >= 0 && moving(w, a) ? root(parent, a) : -1;   /* a, b < 0: no pair (clang-tidy) */
     rb = b >= 0 && moving(w, b) ? root(parent, b) : -1;
     if (ra >= 0) rc = solve_one(w, &is, parent, ra, t, 0, up);

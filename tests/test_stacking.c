@@ -394,25 +394,26 @@ static int test_a_box_setting_off_slowly_down_a_slope_is_not_frozen(void)
 static void still_rule_only(vrSettings *s) { s->rest_speed = 0; }
 
 /* a ball of radius 0.1 rolling on the floor at v (w = v / r): the frame it
- * came to rest at (-1: none in `frames`), and where it was then */
+ * came to rest at (-1: none in `frames`; -2: a step failed), and where it
+ * was then */
 static int rolled_until_rest(double v, int frames, int still_only, double *x)
 {
     vrWorld *w = vrScene_World(0.01, 0.01, G);
     double spin[3] = {0, 0, 0};
     vrObjectId b;
-    int f;
+    int f, failed = 0;
     spin[1] = v / 0.1;
     if (still_only) vrScene_Set(w, still_rule_only);
     floor_of(w, 0.5);
     b = ball(w, "ball", 0.1, vec3_make(0, 0, 0.1 + GC), vec3_make(v, 0, 0), 1, 0, 0.5);
     vrScene_Edit(w, b, vrScene_SetSpin, spin);
-    for (f = 1; f <= frames; f++) {
-        if (vrScene_Step(w, 1) != 0) f = frames;
+    for (f = 1; f <= frames && !failed; f++) {
+        failed = vrScene_Step(w, 1) != 0;
         *x = vrScene_State(w, b).position[0];
         if (vrScene_State(w, b).state == VR_STATE_REST) break;
     }
     vrWorld_Destroy(w);
-    return f <= frames ? f : -1;
+    return failed ? -2 : f <= frames ? f : -1;
 }
 
 /* A ball rolling at 2 cm/s (2e-4 m a frame, never still by SPEC 3.5's
