@@ -213,7 +213,9 @@ static int touch_of(vrOwner *o, vrPair *p, double t, double h, vrTouches *out)
 /* (the order they are found in does not matter: the coordinator sorts
  * them by pair; with the heap the pairs in the envelope are the active
  * list, a pair outside it cannot touch, and one flagged since its last
- * look, in the flagged list, is looked at here too) */
+ * look, in the flagged list, is looked at here too: a pair inside the
+ * envelope but not yet listed, as a resting body's with its support is
+ * when the island step wakes it, among them) */
 int vrOwner_Touching(vrOwner *o, double t, double h, vrTouches *out)
 {
     int i, n;
@@ -225,7 +227,7 @@ int vrOwner_Touching(vrOwner *o, double t, double h, vrTouches *out)
         vrPair *p = &o->pair[pi];
         vec3 dir;
         if (!(p->inside || p->flagged) || !p->scheduled) continue;
-        if (o->p.use_heap && i >= o->active.n && p->inside) continue;   /* listed as active already */
+        if (o->p.use_heap && i >= o->active.n && p->active >= 0) continue;   /* listed as active already */
         if (!p->inside && vrPair_SphereGap(o, p, t, &dir) > o->region) continue;   /* far apart: no query */
         if (touch_of(o, p, t, h, out) != 0) return -1;
     }

@@ -107,7 +107,9 @@ static int test_a_real_step_still_stops_a_sliding_box(void)
  * than v_eps, that no contact impulse would ever answer.  The three
  * contacts are one island, solved together (SPEC 7): the balls keep their
  * heights (before islands, the small one sank and the big one rose, for
- * ever). */
+ * ever).  The small ball, at rest when the big one touches it, wakes into
+ * that island step's solve, which pushes it: no contact impulse of its own
+ * (`collisions` stays 0). */
 static int test_a_slanted_nudge_does_not_sink_a_supported_ball(void)
 {
     vrWorld *w = vrScene_World(0.05, 0.01, 9.8);
@@ -120,7 +122,6 @@ static int test_a_slanted_nudge_does_not_sink_a_supported_ball(void)
     s = vrScene_State(w, small);
     printf("    small ball: x %.6f, z %.17g, vx %.3g mm/s, vz %.3g\n", s.position[0], s.position[2],
            1e3 * s.linear_vel[0], s.linear_vel[2]);
-    ENSURE(vrScene_Stats(w).collisions > 0);
     ENSURE(s.linear_vel[0] > 0.001);              /* it was pushed along */
     ENSURE(fabs(s.linear_vel[2]) < 1e-9);
     ENSURE_NEAR(s.position[2], ON(0.15), 1e-9);
