@@ -502,6 +502,49 @@ static int test_region_tilted_box_gives_its_edge_clipped(void)
     return 0;
 }
 
+/* A corner of the region that is a vertex of a body has that vertex's gap,
+ * whatever the last bits of the clipping that made it: pile seed 25's cube
+ * (half 0.15) tilted 3 mrad on its room's floor (2.5 x 2.5 x 0.25 m), at
+ * its pose and at the next ulp of its turn, has its bottom corners at 1.0,
+ * 1.0, 1.825 and 1.825 mm.  The floor clipped by the cube's edges gave two
+ * corners bits off the cube's vertices, which the gap's lookup missed: 1.0
+ * mm for all four at the second pose (an island let those corners close in
+ * at their true gap, and a contact impulse stopped each: 1.5e-4 J). */
+static int test_region_corner_gaps_are_the_vertices_heights(void)
+{
+    static const char *qs[2][4] = {
+        {"0x1.0d4fb43d76b22p-1", "-0x1.0e0da38698b1dp-1", "-0x1.e3c052d620d92p-2", "0x1.e26c187e4dd95p-2"},
+        {"0x1.0d4fb43d76b23p-1", "-0x1.0e0da38698b1ep-1", "-0x1.e3c052d620d93p-2", "0x1.e26c187e4dd96p-2"}};
+    Fix floor, cube;
+    vrPose pf = identity_at(0, 0, -0.25), pc;
+    vrWalkCache w;
+    vrContact c;
+    int k, i, j;
+    ENSURE(box(&floor, 2.5, 2.5, 0.25) == 0 && box(&cube, 0.15, 0.15, 0.15) == 0);
+    for (k = 0; k < 2; k++) {
+        quat q = quat_make(strtod(qs[k][0], NULL), strtod(qs[k][1], NULL), strtod(qs[k][2], NULL), strtod(qs[k][3], NULL));
+        pc = vrPose_make(vec3_make(strtod("-0x1.c926c22d41f42p+0", NULL), strtod("0x1.8a30d80a6289p+0", NULL),
+                                   strtod("0x1.36178b8e51322p-3", NULL)), q);
+        memset(&w, 0, sizeof w);
+        ENSURE(vrContact_Region(&floor.s, &pf, &cube.s, &pc, 0.002, &w, &c) == 0);
+        ENSURE_MSG(c.npoints == 4, "pose %d: %d points", k, c.npoints);
+        for (i = 0; i < c.npoints; i++) {     /* the cube's vertex under the point: its height is the gap */
+            double best = INFINITY, height = 0;
+            for (j = 0; j < 8; j++) {
+                vec3 v = vec3_add(pc.p, quat_rotate(q, vec3_make(j & 1 ? 0.15 : -0.15, j & 2 ? 0.15 : -0.15, j & 4 ? 0.15 : -0.15)));
+                double off = hypot(v.x - c.point[i].x, v.y - c.point[i].y);
+                if (off < best) best = off, height = v.z;
+            }
+            ENSURE_MSG(best < 1e-9, "pose %d: point %d is no vertex's (%.3g m off)", k, i, best);
+            ENSURE_MSG(fabs(c.gap[i] - height) < 1e-9, "pose %d: point %d's gap %.9f, its vertex %.9f above the floor",
+                       k, i, c.gap[i], height);
+        }
+    }
+    unfix(&floor);
+    unfix(&cube);
+    return 0;
+}
+
 /* Two boxes on edges, crossed at right angles: one point, the crossing;
  * normal along the edges' cross product (+z from a to b). */
 static int test_region_crossed_edges_give_one_point(void)
@@ -948,6 +991,7 @@ static const vrTest tests[] = {
     TEST(test_region_box_flat_on_table_is_its_four_bottom_corners),
     TEST(test_region_overhanging_box_is_clipped_to_the_table),
     TEST(test_region_tilted_box_gives_its_edge_clipped),
+    TEST(test_region_corner_gaps_are_the_vertices_heights),
     TEST(test_region_crossed_edges_give_one_point),
     TEST(test_region_vertex_on_face_is_the_vertex),
     TEST(test_region_is_reduced_to_its_extremes),
