@@ -10,7 +10,8 @@
  * straight on to the next island step.  A point's gap may close to g_c
  * within the step and no further (its floor), so bodies come to rest g_c
  * apart, with no push-out and no event per internal step.  A resting body
- * touched by a moving one wakes and joins its island.  Impacts that bounce
+ * touched by a moving one wakes, with its resting island, before the step
+ * is solved, and joins its island with its own contacts.  Impacts that bounce
  * stay events of their own (SPEC 3.1): islands have restitution 0.
  *
  * Everything here is a function of the states at t and of the touching
@@ -22,6 +23,7 @@
  *   island_body         a body as island.c needs it
  *   solve_one           an island solved, its bodies' new states
  *   leave_contact       bodies no longer touching fly under the force again
+ *   wake_touched        resting islands a touch reaches, woken before the solve
  *   vrIsland_Step
  */
 #include <stdlib.h>

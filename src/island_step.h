@@ -6,7 +6,9 @@
 
 /* At t, for a contact step of h: every pair the owners find touching is
  * solved with the others of its island (island.c), the step's gravity
- * paid into the velocities; the states go through vrWorld_ApplyUpdate.
+ * paid into the velocities (a resting island that a touch reaches woken
+ * first, its own contacts gathered again and solved with the rest); the
+ * states go through vrWorld_ApplyUpdate.
  * 0, -1 (err), or VR_RESTART_FRAME from the owners. */
 int vrIsland_Step(vrWorld *w, double t, double h, char *err, size_t n);
 /* The contacts of an instant: the islands of bodies a and b (the pair of

@@ -8,6 +8,7 @@
  * midway between the support planes.
  *   reduce                      at most VR_REGION_MAX points
  *   slab, project               the vertices near the other's plane, in 2-D
+ *   at_corner, corner_gap       a region corner's gap: its vertex's height
  *   region_points               their hulls' intersection, lifted
  *   cmp_p2, seg_dist            containment's sort order; distance to a segment
  *   strictly_convex, inside_by  a region as it is; the margin of a point in it
