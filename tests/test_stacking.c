@@ -360,7 +360,7 @@ static vrObjectId woken_on_ramp(vrWorld *w, int heap_off)
  * with the touch (island_step.c).  Woken only after the solve, it took the
  * step's gravity with the ramp's contact left out, and the ramp answered
  * its corners one impulse at a time (pile seed 7 gained 4.7e-5 J so at
- * frame 505: test_piles_of_four_more_seeds_gain_no_energy).  The owner's
+ * frame 505: test_piles_of_six_more_seeds_gain_no_energy).  The owner's
  * touching pairs, with the heap, left out a pair inside the envelope that
  * the wake had just scheduled, which heap = 0 looks at (pair_events.c):
  * heap on and off give the same bits, and the energy never rises. */
@@ -700,15 +700,18 @@ static int test_a_pile_of_a_hundred_settles(void)
     return 0;
 }
 
-/* The same pile from four more seeds: no frame's energy rises (6 and 9
+/* The same pile from six more seeds: no frame's energy rises (6 and 9
  * broke the rule at 6a904f7, before spins over their caps by rounding
  * alone were cut again; seed 0's pile above broke it until a push-out's
  * lift was paid from a ball's spin and then its speed, effect.c; seed 8
  * broke it at frame 1992 by 9.8e-4 J while an island solve stopped early
  * could leave a contact sinking, island.c STALL_LEFT; seed 7 at frame 505
  * by 4.7e-5 J while a resting body woken at an island step was solved
- * without its own contacts, island_step.c wake_touched).  Of seeds 0-99
- * over 30 s, 4 still break it (1.1e-5 to 1.5e-4 J): README, open. */
+ * without its own contacts, island_step.c wake_touched; 96 at frame 507
+ * and 13 at 735, by up to 1.9e-3 J, while an island solve stopped at its
+ * cap had all its impulses scaled back to pay what it gained, its bodies
+ * creeping into the floor, island.c MORE_SWEEPS).  Seeds 0-99 over 30 s
+ * all keep it now. */
 static int seed_now;
 static void pile_seed(vrSettings *s)
 {
@@ -716,12 +719,12 @@ static void pile_seed(vrSettings *s)
     s->seed = (unsigned long long)seed_now;
 }
 
-static int test_piles_of_four_more_seeds_gain_no_energy(void)
+static int test_piles_of_six_more_seeds_gain_no_energy(void)
 {
-    static const int seeds[] = {6, 9, 8, 7}, frames[] = {3000, 3000, 2000, 600};
+    static const int seeds[] = {6, 9, 8, 7, 96, 13}, frames[] = {3000, 3000, 2000, 600, 600, 800};
     char err[256];
     int k;
-    for (k = 0; k < 4; k++) {
+    for (k = 0; k < 6; k++) {
         vrWorld *w = vrScene_World(0.01, 0.01, G);
         seed_now = seeds[k];
         vrScene_Set(w, pile_seed);
@@ -750,7 +753,7 @@ static const vrTest tests[] = {
     TEST(test_an_elastic_newtons_cradle_sends_out_one_ball),
     TEST(test_a_settling_pile_of_fifty_gains_no_energy),
     TEST(test_a_pile_of_a_hundred_settles),
-    TEST(test_piles_of_four_more_seeds_gain_no_energy),
+    TEST(test_piles_of_six_more_seeds_gain_no_energy),
 };
 
 const vrTestSuite vrSuite_Stacking = {"stacking", tests, TEST_COUNT(tests), NULL, NULL, 0};
