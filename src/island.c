@@ -234,16 +234,6 @@ static double step_energy(const vrIslandBody *b, const mat33 *inertia, int n)
     return e;
 }
 
-/* The step's energy after the solve against before the force was paid in
- * (island.h).  When it rose by R, the impulses are scaled by s in [0, 1]:
- * with none the step loses C = sum m |paid|^2 / 2, and the step's energy
- * is convex in s, so s = C / (C + R) gains nothing (s is 1 - R / C to
- * first order: 4e-5 for the pile's worst, a resting body sinking 4e-9 m in
- * the step).  A gain within SPEC 7's 1e-9 J (and 1e-9 of the island's own
- * energy, when that is less than 1 J) is left alone: most solves of a
- * settling pile gain 1e-12 J or less, rounding, and scaled every one
- * pulled the pile's settling along another path.  Without a force there
- * is nothing to scale back to; the kinetic check's tries hold there. */
 /* the step's energy after the solve less before the force was paid in,
  * when that is above SPEC 7's allowance (else 0); *C the step's loss with
  * no impulse at all, sum m |paid|^2 / 2 */
@@ -260,10 +250,20 @@ static double step_gain(const vrIslandBody *body, const vrIslandBody *before, co
     return R > 1e-9 * fmin(1.0, e0 + *C) ? R : 0;
 }
 
-static void pay_back(vrIslandBody *body, const vrIslandBody *before, const mat33 *inertia, int nbody,
-                     vrIslandContact *c, int ncontact)
+/* The step's energy after the solve against before the force was paid in
+ * (island.h).  When it rose by R, the impulses are scaled by s in [0, 1]:
+ * with none the step loses C = sum m |paid|^2 / 2, and the step's energy
+ * is convex in s, so s = C / (C + R) gains nothing (s is 1 - R / C to
+ * first order: 4e-5 for the pile's worst, a resting body sinking 4e-9 m in
+ * the step).  A gain within SPEC 7's 1e-9 J (and 1e-9 of the island's own
+ * energy, when that is less than 1 J) is left alone: most solves of a
+ * settling pile gain 1e-12 J or less, rounding, and scaled every one
+ * pulled the pile's settling along another path.  Without a force there
+ * is nothing to scale back to; the kinetic check's tries hold there. */
+static void pay_back(vrIslandBody *body, const vrIslandBody *before, int nbody, vrIslandContact *c, int ncontact,
+                     double R, double C)
 {
-    double C, R = step_gain(body, before, inertia, nbody, &C), s;
+    double s;
     int i, k;
     if (!(R > 0)) return;
     s = C / (C + R);
@@ -292,7 +292,7 @@ static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int nc
 {
     vrIslandBody *before;
     mat33 *inertia;
-    double e0, C;
+    double e0, C = 0, R = 0;
     int i, r, try;
     vrIslandStats dummy;
     if (!st) st = &dummy;
@@ -321,7 +321,8 @@ static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int nc
     }
     if (st->frictionless)
         for (i = 0; i < ncontact; i++) c[i].friction = vec3_zero(), c[i].twist = 0;
-    if (r == 0 && stall && step_gain(body, before, inertia, nbody, &C) > 0) {
+    if (r == 0) R = step_gain(body, before, inertia, nbody, &C);
+    if (R > 0 && stall) {
         /* A step's solve stopped at the cap short of the answer (a pile's
          * island of ninety) may gain a little over the step.  Scaled back,
          * every impulse of the island gave way with it, its bodies kept 1
@@ -335,8 +336,9 @@ static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int nc
         memcpy(body, before, (size_t)nbody * sizeof *before);
         r = solve(body, nbody, c, ncontact, MORE_SWEEPS, tol, frictionless, stall, st);
         st->frictionless = frictionless, st->bounceless = bounceless;
+        if (r == 0) R = step_gain(body, before, inertia, nbody, &C);
     }
-    if (r == 0) pay_back(body, before, inertia, nbody, c, ncontact);
+    if (r == 0) pay_back(body, before, nbody, c, ncontact, R, C);
     free(before);
     free(inertia);
     return r;

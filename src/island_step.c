@@ -411,8 +411,9 @@ static int wake_touched(vrWorld *w, double t)
     for (k = 0; k < w->touches.n; k++) {
         const vrTouch *c = &w->touches.t[k];
         int x[2];
+        if (c->leaving > 0) continue;
         x[0] = c->a, x[1] = c->b;
-        for (e = 0; e < 2 && c->leaving <= 0; e++) {
+        for (e = 0; e < 2; e++) {
             vrBody *b = &w->table.obj[x[e]]->body;
             vrBodyState *st;
             if (!b->resting) continue;

@@ -347,11 +347,12 @@ static vrObjectId woken_on_ramp(vrWorld *w, int heap_off)
     if (a == VR_NO_OBJECT || vrScene_Step(w, 100) != 0) return VR_NO_OBJECT;
     b = box(w, "pusher", vec3_make(0.1, 0.1, 0.1),
             vec3_add(vec3_scale(ramp_normal(th), 0.1 + GC), vec3_scale(downhill(th), 0.2 + gap)), 1, 0.5, 0);
+    if (b == VR_NO_OBJECT) return VR_NO_OBJECT;
     rot[3] = -th;
     v[0] = -downhill(th).x * v0, v[1] = 0, v[2] = -downhill(th).z * v0;
     vrScene_Edit(w, b, vrScene_SetRotation, rot);
     vrScene_Edit(w, b, vrScene_SetVelocity, v);
-    return b == VR_NO_OBJECT ? VR_NO_OBJECT : a;
+    return a;
 }
 
 /* The resting box, woken when the pusher touches it at an island step,
