@@ -347,8 +347,10 @@ double vrGap_Along(const vrGap *g, vec3 u)
 }
 
 /* the normals (times sign) of the faces at feature f of x that separate
- * better than *best does */
-static void try_faces(const vrGap *g, const vrPosed *x, vrFeature f, double sign, vec3 *best, double *bestgap)
+ * better than *best does, among those whose dot product with `near` is
+ * at least min_dot */
+static void try_faces(const vrGap *g, const vrPosed *x, vrFeature f, double sign, vec3 near, double min_dot,
+                      vec3 *best, double *bestgap)
 {
     const vrPolyhedron *p = x->p;
     int k, j, lo = f.type == VR_VERTEX ? p->vert_edge_start[f.index] : 0;
@@ -357,7 +359,9 @@ static void try_faces(const vrGap *g, const vrPosed *x, vrFeature f, double sign
         for (j = 0; j < 2; j++) {
             int e = f.type == VR_VERTEX ? p->vert_edge[k] : f.index;
             vec3 u = vec3_scale(vrPose_rotate(x->pose, p->face_normal[p->edge_f[e][j]]), sign);
-            double gu = vrGap_Along(g, u);
+            double gu;
+            if (vec3_dot(u, near) < min_dot) continue;
+            gu = vrGap_Along(g, u);
             if (gu > *bestgap) *best = u, *bestgap = gu;
         }
 }
@@ -368,7 +372,7 @@ static void try_faces(const vrGap *g, const vrPosed *x, vrFeature f, double sign
  * 1.4e-8 m), which tilts a 26 cm edge 2e-9 m, beyond SUPPORT_TOL, so the
  * edge's lower end alone was taken as b's support and the distance came
  * out 0.21 m for two touching boxes; the cross product is exact. */
-static void try_edges(const vrGap *g, int ea, int eb, vec3 *best, double *bestgap)
+static void try_edges(const vrGap *g, int ea, int eb, vec3 near, double min_dot, vec3 *best, double *bestgap)
 {
     const vrPolyhedron *pa = g->a->p, *pb = g->b->p;
     vec3 da = vrPose_rotate(g->a->pose, vec3_sub(pa->vert[pa->edge_v[ea][1]], pa->vert[pa->edge_v[ea][0]]));
@@ -377,6 +381,7 @@ static void try_edges(const vrGap *g, int ea, int eb, vec3 *best, double *bestga
     double gu, gn;
     if (vec3_len2(u) <= PARALLEL_SIN2 * vec3_len2(da) * vec3_len2(db)) return;
     u = vec3_normalize(u);
+    if (fabs(vec3_dot(u, near)) < min_dot) return;
     gu = vrGap_Along(g, u);
     gn = vrGap_Along(g, vec3_neg(u));
     if (gn > gu) u = vec3_neg(u), gu = gn;
@@ -385,26 +390,38 @@ static void try_edges(const vrGap *g, int ea, int eb, vec3 *best, double *bestga
 
 /* Direction of separation at the walk's final features fa, fb (fb unused
  * for a point): a face normal when one is a face (exact however small the
- * gap); else the direction between the closest points.  That direction
- * carries rounding of order 1e-16 m / gap: below GAP_FUZZ the normals of
- * the faces at the features compete with it, and the best separating one
- * wins, so that a plate 1e-12 m above a table, walked to a pair of parallel
- * edges, still finds the table's face. */
+ * gap); else the direction between the closest points, against which the
+ * normals of the faces at the features (and two edges' cross product)
+ * compete: the best separating one wins.  Below GAP_FUZZ that direction
+ * carries rounding of order 1e-16 m / gap (a plate 1e-12 m above a table,
+ * walked to a pair of parallel edges, must still find the table's face).
+ * Above it, parallel edges of faces that face each other tilt it for
+ * real: two 0.3 m cubes side by side 1 mm apart, one 3.4e-11 m lower than
+ * the other, walked to their top edges, gave a direction 3.4e-8 rad off
+ * the faces' normal, along which the faces' far edges stand 1e-8 m out,
+ * beyond SUPPORT_TOL: the supports were a's top edge and b's bottom edge,
+ * and the distance came out 0.3 m with a vertical normal (the pair left
+ * the envelope and the island).  Along the exact closest direction the
+ * gap is the distance and along any other at most that, so a face normal
+ * wins only where it is (within rounding) a closest direction too; above
+ * GAP_FUZZ only those within NEAR_DOT of the direction are measured (a
+ * corner or an edge that truly is closest has none: no cost there). */
 #define GAP_FUZZ 1e-6
+#define NEAR_DOT (1 - 1e-6)
 vec3 vrGap_WalkDirection(const vrGap *g, vrFeature fa, vrFeature fb, vec3 ca, vec3 cb, double dw)
 {
-    vec3 best;
-    double bestgap;
+    vec3 best, walked;
+    double bestgap, min_dot;
     if (fa.type == VR_FACE) return vrPose_rotate(g->a->pose, g->a->p->face_normal[fa.index]);
     if (g->b && fb.type == VR_FACE) return vec3_neg(vrPose_rotate(g->b->pose, g->b->p->face_normal[fb.index]));
-    best = vec3_normalize(vec3_sub(cb, ca));
-    if (dw >= GAP_FUZZ * (1 + g->a->p->r_out + (g->b ? g->b->p->r_out : 0))) return best;
+    best = walked = vec3_normalize(vec3_sub(cb, ca));
+    min_dot = dw >= GAP_FUZZ * (1 + g->a->p->r_out + (g->b ? g->b->p->r_out : 0)) ? NEAR_DOT : -2;
     /* closest points that coincide (crossing edges 3e-17 m apart) give no
      * direction at all: the features' own then win whatever their gap */
     bestgap = vec3_len2(best) > 0 ? vrGap_Along(g, best) : -HUGE_VAL;
-    if (g->b && fa.type == VR_EDGE && fb.type == VR_EDGE) try_edges(g, fa.index, fb.index, &best, &bestgap);
-    if (fa.type == VR_VERTEX || fa.type == VR_EDGE) try_faces(g, g->a, fa, 1, &best, &bestgap);
-    if (g->b && (fb.type == VR_VERTEX || fb.type == VR_EDGE)) try_faces(g, g->b, fb, -1, &best, &bestgap);
+    if (g->b && fa.type == VR_EDGE && fb.type == VR_EDGE) try_edges(g, fa.index, fb.index, walked, min_dot, &best, &bestgap);
+    if (fa.type == VR_VERTEX || fa.type == VR_EDGE) try_faces(g, g->a, fa, 1, walked, min_dot, &best, &bestgap);
+    if (g->b && (fb.type == VR_VERTEX || fb.type == VR_EDGE)) try_faces(g, g->b, fb, -1, walked, min_dot, &best, &bestgap);
     if (vec3_len2(best) == 0) best = vrUnitOrUp(vec3_sub(g->b ? g->b->pose->p : g->c, g->a->pose->p));
     return best;
 }

@@ -384,6 +384,47 @@ static int test_overlapping_stack_boxes_are_seen_overlapping_from_every_start(vo
     return 0;
 }
 
+/* Two 0.3 m cubes resting upside down side by side, 1.02 mm apart, one
+ * 3.4e-11 m lower than the other (poses from a pile, seed 26, t = 1.495):
+ * a walk ending on their top edges gave a direction 3.4e-8 rad off the
+ * facing faces' normal, along which the supports were a's top edge and
+ * b's bottom edge, and a distance of 0.3 m with a vertical normal.  From
+ * every start: the gap between the faces, along their normal, the same
+ * bits. */
+static int test_cubes_side_by_side_are_their_gap_apart_from_every_start(void)
+{
+    Fix a, b;
+    vrPose pa = vrPose_make(vec3_make(-0.90404430173609629, -1.1468694318791339, 0.15099999998243954),
+                            quat_make(-5.4079410243814805e-11, -0.38262744831622031, -0.92390271987640471, 2.2395816426154953e-11));
+    vrPose pb = vrPose_make(vec3_make(-1.2451751979999677, -1.2417316442324673, 0.15099999998838309),
+                            quat_make(-3.6063635268083932e-11, 0.98910896305990159, 0.14718511879455221, 1.8443540402352985e-11));
+    double first = NAN, worst = 0;
+    int ta, ia, tb, ib, bad = 0, n = 0;
+    ENSURE(box(&a, 0.15, 0.15, 0.15) == 0 && box(&b, 0.15, 0.15, 0.15) == 0);
+    for (ta = 0; ta < 3; ta++)
+        for (ia = 0; ia < 12; ia++)
+            for (tb = 0; tb < 3; tb++)
+                for (ib = 0; ib < 12; ib++) {
+                    vrWalkCache cache;
+                    vrContact c;
+                    if ((ta == VR_VERTEX && ia >= 8) || (ta == VR_FACE && ia >= 6)) continue;
+                    if ((tb == VR_VERTEX && ib >= 8) || (tb == VR_FACE && ib >= 6)) continue;
+                    memset(&cache, 0, sizeof cache);
+                    cache.a.type = ta, cache.a.index = ia, cache.b.type = tb, cache.b.index = ib;
+                    cache.valid = 1;
+                    vrContact_Distance(&a.s, &pa, &b.s, &pb, &cache, &c);
+                    if (isnan(first)) first = c.dist;
+                    if (fabs(c.dist - first) > worst) worst = fabs(c.dist - first);
+                    if (!(fabs(c.dist - 1.0227388e-3) < 1e-9 && fabs(c.n.z) < 1e-9)) bad++;
+                    n++;
+                }
+    unfix(&a);
+    unfix(&b);
+    printf("    %d of %d starts off the gap (1.0227 mm, level normal); distances within %.3g m\n", bad, n, worst);
+    ENSURE(bad == 0 && worst == 0);
+    return 0;
+}
+
 /* Parallel faces, stacked cubes, parallel and crossed edges, a pole over a
  * face: Region gives the same bits from every start pair of features. */
 static int test_region_is_bit_identical_from_every_start_cache(void)
@@ -987,6 +1028,7 @@ static const vrTest tests[] = {
     TEST(test_touching_tilted_boxes_distance_is_brute_force),
     TEST(test_edges_crossing_at_rounding_distance_touch),
     TEST(test_overlapping_stack_boxes_are_seen_overlapping_from_every_start),
+    TEST(test_cubes_side_by_side_are_their_gap_apart_from_every_start),
     TEST(test_region_is_bit_identical_from_every_start_cache),
     TEST(test_region_box_flat_on_table_is_its_four_bottom_corners),
     TEST(test_region_overhanging_box_is_clipped_to_the_table),
