@@ -98,6 +98,7 @@ typedef struct vrSettings {
     double force_dir[3];      /* != 0, (0,0,-1) */
     double force_mag;         /* >= 0, 0 (no global force until `force` or `gravity`) */
     int heap;                 /* 1: scheduling heap; 0: every pair every internal step */
+    int keep_looks;           /* 1: looks past an event at pairs it does not change stand; 0: made again (same bits) */
     vrBroadphaseKind broadphase; /* sorted sweep or box trees */
     long max_frames;          /* batch `start` limit, 600 */
     unsigned long long seed;  /* `random` stream seed, 0 */

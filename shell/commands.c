@@ -99,6 +99,8 @@ const Command sh_commands[] = {
      K_CHOICE, R_ANY, 0, 0, 0, frame_formats, T_NONE, 0, 0, run_frames_format},
     SETTING("max_frames", "max_frames = n", "a script's start stops after n frames", "600", G_EXT, K_INT, R_CLOSED, 0, 1e9, max_frames),
     SETTING("heap", "heap = 0|1", "1: the scheduling heap; 0: every pair at every internal step", "1", G_EXT, K_INT, R_CLOSED, 0, 1, heap),
+    SETTING("keep_looks", "keep_looks = 0|1", "1: looks past an event at pairs it does not change stand; 0: made again",
+            "1", G_EXT, K_INT, R_CLOSED, 0, 1, keep_looks),
     {"broadphase", "broadphase = sweep|tree", "how the pairs whose boxes meet are found: sorted sweep or box trees",
      "tree", G_EXT, F_ASSIGN, K_CHOICE, R_ANY, 0, 0, 0, broadphases, T_SETTINGS, offsetof(vrSettings, broadphase), 0,
      run_setting},

@@ -39,6 +39,7 @@ vrSettings vrSettings_Default(void)
     s.max_angular = 4.0;
     s.force_dir[2] = -1.0;
     s.heap = 1;
+    s.keep_looks = 1;
     s.broadphase = VR_BROADPHASE_TREE;
     s.max_frames = 600;
     s.distribution = VR_DIST_ROUND_ROBIN;
@@ -130,6 +131,7 @@ int vrSettings_Check(const vrSettings *s, char *err, size_t n)
     if (!vec3_isfinite(f) || vec3_len2(f) == 0) return vrGeom_Fail(err, n, "force direction must be a non-zero vector");
     if (bad_range(s->force_mag, 0, VR_ACCEL_MAX, 0)) return out_of_range(err, n, "force magnitude", "0..1e6 m/s^2", s->force_mag);
     if (s->heap != 0 && s->heap != 1) return out_of_range(err, n, "heap", "0 or 1", s->heap);
+    if (s->keep_looks != 0 && s->keep_looks != 1) return out_of_range(err, n, "keep_looks", "0 or 1", s->keep_looks);
     if (s->broadphase != VR_BROADPHASE_SWEEP && s->broadphase != VR_BROADPHASE_TREE)
         return vrGeom_Fail(err, n, "broadphase must be sweep or tree");
     if (s->max_frames < 0) return out_of_range(err, n, "max_frames", ">= 0", s->max_frames);
@@ -202,6 +204,7 @@ vrParams vrSettings_Params(const vrSettings *s)
     p.d = s->collision_dist;
     p.flight = vrSettings_Flight(s);
     p.use_heap = s->heap;
+    p.keep_looks = s->keep_looks;
     p.use_tree = s->broadphase == VR_BROADPHASE_TREE;
     return p;
 }
@@ -213,5 +216,5 @@ int vrSettings_Changes(const vrSettings *a, const vrSettings *b)
         || a->force_dir[0] != b->force_dir[0] || a->force_dir[1] != b->force_dir[1]
         || a->force_dir[2] != b->force_dir[2])
         return VR_PARAMS_OWNERS | VR_PARAMS_MOTION;
-    return a->heap != b->heap || a->broadphase != b->broadphase ? VR_PARAMS_OWNERS : 0;
+    return a->heap != b->heap || a->broadphase != b->broadphase || a->keep_looks != b->keep_looks ? VR_PARAMS_OWNERS : 0;
 }

@@ -152,6 +152,7 @@ static void changed_near(vrOwner *o, int id, const vrBox *box)
 void vrOwner_BodiesChanged(vrOwner *o, const int *ids, int n)
 {
     int i, j, k = 0, near;
+    vrOwner_TakeBackChanged(o, ids, n);    /* their looks past the event first */
     for (i = 0; i < n; i++)
         if (ids[i] < o->bodycap && o->body[ids[i]]) vrBroad_Rebox(&o->bp, o->body, ids[i]);
     near = o->bp.map.cap && !o->awake_lost && vrBroad_CanMeet(&o->bp);

@@ -9,8 +9,9 @@
  * the heap mode or the owner, so the outcome is the same; the heap only
  * skips checks that cannot matter.
  * Look-ahead is speculative: what it learnt past the first event of all
- * is rolled back by vrOwner_Advance (the undo log).
- *   remember, vrOwner_Advance   the undo log
+ * is taken back (look_log.c), or with keep_looks kept for the pairs the
+ * answer does not change.
+ *   kept_events_at, kept_look   what a walk before this one found and looked at
  *   vrOwner_PutOffKey, later_keys   keys made once no earlier impact drops them
  *   evaluate                    one pair at one grid point: cheap looks,
  *                               query, bisection, events, quiet proofs
@@ -19,36 +20,15 @@
 #include "owner_state.h"
 #include "grow.h"
 
-static void remember(vrOwner *o, int pi, double at)
+/* the events kept for grid point t join those found there */
+static void kept_events_at(vrOwner *o, double t)
 {
-    vrUndo *u;
-    if (vrGrow((void **)&o->undo, &o->undocap, o->nundo + 1, sizeof *o->undo) != 0) return;
-    u = &o->undo[o->nundo++];
-    u->pair = pi;
-    u->at = at;
-    u->inside = o->pair[pi].inside;
-    u->near = o->pair[pi].near;
-    u->overlap = o->pair[pi].overlap;
-    u->t_check = o->pair[pi].t_check;
-    u->key = o->pair[pi].key;
-    u->quiet_until = o->pair[pi].quiet_until;
-}
-
-void vrOwner_Advance(vrOwner *o, double t)
-{
-    int i;
-    for (i = o->nundo - 1; i >= 0; i--) {
-        const vrUndo *u = &o->undo[i];
-        vrPair *p = &o->pair[u->pair];
-        if (u->at <= t) continue;
-        p->t_check = u->t_check;
-        p->quiet_until = u->quiet_until;
-        p->near = u->near;
-        p->overlap = u->overlap;
-        vrPair_Settle(o, u->pair, u->inside, u->key);
+    int i, k = 0;
+    for (i = 0; i < o->nkept; i++) {
+        if (o->kept[i].point == t) vrEvents_Push(&o->found, &o->nfound, &o->foundcap, &o->kept[i].ev);
+        else o->kept[k++] = o->kept[i];
     }
-    o->nundo = 0;
-    if (o->pending_t != t) o->npending = 0;
+    o->nkept = k;
 }
 
 /* the time of the first event found so far at this grid point */
@@ -79,7 +59,7 @@ static int impact_before(const vrOwner *o, double t) { return earliest_found(o) 
  * most looks at a grid point with an impact come before it) */
 static void later_keys(vrOwner *o, double t)
 {
-    int i, drop = impact_before(o, t);
+    int i, drop = impact_before(o, t) && !o->p.keep_looks;   /* kept looks keep their keys */
     for (i = 0; i < o->nlater && !drop; i++) {
         const struct vrLaterKey *k = &o->later[i];
         vrPair_Settle(o, k->pair, 0, vrPair_Key(o, &o->pair[k->pair], t, k->dist, k->n));
@@ -87,9 +67,12 @@ static void later_keys(vrOwner *o, double t)
     o->nlater = 0;
 }
 
-/* Evaluates pair pi at t.  t_prev is the previous grid point (t_prev == t at
- * a span start, where no step can be bisected).  Returns 1 with *ev when the
- * pair has an event. */
+/* Evaluates pair pi at t.  t_prev is the anchored grid point before t, or
+ * t itself at a span start, where no step can be bisected.  The bracket
+ * starts there, or where either body's motion starts if later (an event
+ * changed it within the step): so it is the pair's own, not the span's,
+ * and the same whatever other events started the span.  Returns 1 with
+ * *ev when the pair has an event. */
 static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
 {
     vrPair *p = &o->pair[pi];
@@ -97,7 +80,9 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     vrContact c;
     int was_inside, was_near, was_overlap;
     double wanted = earliest_found(o);   /* events found here so far: later ones are dropped */
-    remember(o, pi, t);
+    t_prev = vr_max(t_prev, vr_max(o->body[p->a]->m.t0, o->body[p->b]->m.t0));
+    vrLook_Remember(o, pi, t);
+    p->looked = t;
     p->quiet_until = -INFINITY;
     if (vrPair_ClearBySpheres(o, pi, t) || vrPair_ClearByWalk(o, pi, t)) return 0;
     vrPair_Query(o, p, t, 1, &pa, &pb, &c);   /* the region is only made inside the envelope */
@@ -115,6 +100,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
      * that still comes in, pair_events.c) */
     if (!p->near && c.dist <= o->gc && t > t_prev) {
         double at = vrPair_Bisect(o, p, t_prev, t, &c, o->gc, wanted);
+        if (isnan(at)) vrLook_Redo(o, pi);
         if (isnan(at) || vrPair_Impact(o, ev, p, at)) {
             vrPair_Settle(o, pi, p->inside, t);  /* due again at once: it is rolled back or re-evaluated */
             return !isnan(at);
@@ -129,7 +115,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     vrPair_ForEvents(o, p, t, &pa, &pb, &c);   /* the query above had the region: vrPair_EventQuery's */
     if (was_near && !was_overlap && t > t_prev && p->overlap) {
         double at = vrPair_Bisect(o, p, t_prev, t, &c, 0, wanted);
-        if (isnan(at)) return 0;         /* after an event found here: rolled back */
+        if (isnan(at)) return vrLook_Redo(o, pi), 0;   /* after an event found here: rolled back */
         if (vrPair_Touch(o, ev, p, at)) return 1; /* due again at once, as after an impact */
     }
     if (vrPair_InsideEvents(o, ev, t, p, &pa, &pb, &c)) return 1;
@@ -153,6 +139,28 @@ static int take_first(vrOwner *o, double at, vrEvent *ev)
     for (i = 0; i < o->nfound; i++)
         if (o->found[i].t == at) vrEvents_Push(&o->pending, &o->npending, &o->pendcap, &o->found[i]);
     o->pending_t = at;
+    /* the others, found before the grid point, are kept with their looks */
+    for (i = 1; o->p.keep_looks && ev->t != at && i < o->nfound; i++) {
+        if (vrGrow((void **)&o->kept, &o->keptcap, o->nkept + 1, sizeof *o->kept) != 0) {
+            o->keep_lost = 1;                   /* no memory: nothing is kept past the answer */
+            break;
+        }
+        o->kept[o->nkept].ev = o->found[i];
+        o->kept[o->nkept++].point = at;
+    }
+    return 1;
+}
+
+/* pair pi was looked at at grid point t by a walk before this one: that
+ * look stands (keep_looks), and one the heap gave goes back into it after
+ * this point, due at the next, as after a look made now */
+static int kept_look(vrOwner *o, int pi, double t, int from_heap)
+{
+    if (!(o->p.keep_looks && o->pair[pi].looked == t)) return 0;
+    if (from_heap && vrIntList_Push(&o->again, pi) != 0) {
+        o->keep_lost = 1;      /* no memory: looked at again (the next answer takes every look back) */
+        return 0;
+    }
     return 1;
 }
 
@@ -223,13 +231,20 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     o->bp.t0 = g->t0;
     o->span_end = g->T;
     o->closed_t = allow_instant ? NAN : g->t0;
+    /* kept looks stand on the grid they were made on, and not where an
+     * instant is closed (an event there is dropped, pair_events.c) */
+    if (o->p.keep_looks && (!allow_instant || !(g->a == o->kept_a && g->h == o->kept_h))) vrOwner_Advance(o, g->t0);
+    o->kept_a = g->a;
+    o->kept_h = g->h;
     span_start(o, g->t0, allow_instant);
     if (o->nfound) return take_first(o, g->t0, ev);
     while (k <= g->n) {
         double t = vrGrid_Point(g, k), key;
         collect_due(o, t);
+        kept_events_at(o, t);
         o->defer_keys = 1;
-        for (i = 0; i < o->due.n; i++) evaluate_into_found(o, o->due.v[i], t, vrGrid_Point(g, k - 1), 1);
+        for (i = 0; i < o->due.n; i++)
+            if (!kept_look(o, o->due.v[i], t, o->p.use_heap)) evaluate_into_found(o, o->due.v[i], t, vrGrid_Before(g, k), 1);
         o->defer_keys = 0;
         /* A touching pair has its events at grid points only, unless it
          * overlaps there (touch), and one in the envelope only where it
@@ -238,11 +253,13 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
          * look-ahead's work), so only those that may cross are looked at,
          * as a worker without that event would */
         for (i = 0; i < o->due_inside.n; i++)
-            if (!impact_before(o, t) || may_cross(o, o->due_inside.v[i], t))
-                evaluate_into_found(o, o->due_inside.v[i], t, vrGrid_Point(g, k - 1), 1);
+            if (!kept_look(o, o->due_inside.v[i], t, 0) && (!impact_before(o, t) || may_cross(o, o->due_inside.v[i], t)))
+                evaluate_into_found(o, o->due_inside.v[i], t, vrGrid_Before(g, k), 1);
         later_keys(o, t);
+        for (i = 0; i < o->again.n; i++) vrPair_Place(o, o->again.v[i]);
+        o->again.n = 0;
         if (o->nfound) return take_first(o, t, ev);
-        if (!o->p.use_heap || o->active.n > 0) { k++; continue; }
+        if (!o->p.use_heap || o->active.n > 0 || o->nkept > 0) { k++; continue; }
         if (vrHeap_Top(&o->heap, &key) < 0) break;
         k = k + 1 > vrSchedule_FirstPointAtOrAfter(g, key) ? k + 1 : vrSchedule_FirstPointAtOrAfter(g, key);
     }

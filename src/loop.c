@@ -32,15 +32,19 @@ static double now_ms(void)
 }
 
 /* the grid of the span [ts, end] of the frame ending at T (SPEC 3.2): the
- * reach bounds kept for the rest of the frame hold for the span too */
-static void span_grid(const vrWorld *w, double ts, double end, double T, const vrParams *p, vrGrid *g)
+ * reach bounds kept for the rest of the frame hold for the span too.  With
+ * steps, on the anchored points of the contact step starting at a
+ * (vrSchedule_AnchoredGrid); without, its own. */
+static void span_grid(const vrWorld *w, double a, long *steps, double ts, double end, double T, const vrParams *p,
+                      vrGrid *g)
 {
-    if (!w->reach.valid || !(w->reach.T == T) || w->reach.n != w->ndyn) {
-        vrSchedule_Grid(w->dyn, w->ndyn, ts, end, p->d, w->s.internal_step, &p->flight, g);
-    } else {
-        double fastest = vrSchedule_NeedsReach(ts, end, w->s.internal_step) ? vrReach_Fastest(&w->reach, w->dyn, ts, &p->flight) : 0;
-        vrSchedule_GridFor(fastest, ts, end, p->d, w->s.internal_step, g);
-    }
+    double fastest = 0;
+    if (!w->reach.valid || !(w->reach.T == T) || w->reach.n != w->ndyn)
+        fastest = vrSchedule_Fastest(w->dyn, w->ndyn, ts, end, w->s.internal_step, &p->flight);
+    else if (vrSchedule_NeedsReach(ts, end, w->s.internal_step))
+        fastest = vrReach_Fastest(&w->reach, w->dyn, ts, &p->flight);
+    if (steps) vrSchedule_AnchoredGrid(fastest, a, ts, end, p->d, w->s.internal_step, steps, g);
+    else vrSchedule_GridFor(fastest, ts, end, p->d, w->s.internal_step, g);
     g->frame_T = T;
 }
 
@@ -99,6 +103,8 @@ static int moving_bodies(const vrWorld *w)
 typedef struct Frame {
     double T;                /* the frame's end */
     double ts;               /* where the owners look from */
+    double step_at;          /* the contact step's start: its grid's anchor */
+    long step_grid;          /* the steps its grid is cut into (0: none yet) */
     double instant_t;        /* the responses at the last instant so far: a frame ending */
     int instant;             /* at an instant that had its VR_INSTANT_MAX does not give it more */
 } Frame;
@@ -130,7 +136,7 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
         vrGrid g;
         vrEvent ev;
         int r;
-        span_grid(w, f->ts, end, f->T, p, &g);
+        span_grid(w, f->step_at, &f->step_grid, f->ts, end, f->T, p, &g);
         if (too_many_steps(w, &g, (double)w->subframes, VR_FRAME_STEPS_HARD_MAX, err, n) != 0) return -1;
         r = vrOwners_Of(w)->first_event(w, &g, f->instant < VR_INSTANT_MAX, &ev, err, n);
         if (r != 1) {
@@ -164,7 +170,8 @@ static int contact_step(vrWorld *w, Frame *f, double at, double end, const vrPar
     int r = f->T > w->t && moving_bodies(w) ? vrIsland_Step(w, at, end - at, err, n) : 0;
     if (r != 0) return r;
     reach_changed(w, &w->update, p);
-    f->ts = at;
+    f->ts = f->step_at = at;
+    f->step_grid = 0;
     return run_span(w, f, end, p, err, n);
 }
 
@@ -188,7 +195,7 @@ static int hand_steps(vrWorld *w, Frame *f, double at, double end, const vrParam
 static int frame_bounded(const vrWorld *w, const Frame *f, const vrParams *p, char *err, size_t n)
 {
     vrGrid g;
-    span_grid(w, f->ts, f->T, f->T, p, &g);
+    span_grid(w, f->ts, NULL, f->ts, f->T, f->T, p, &g);
     return too_many_steps(w, &g, 0, VR_FRAME_STEPS_MAX, err, n);
 }
 

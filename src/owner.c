@@ -79,6 +79,11 @@ void vrOwner_Free(vrOwner *o)
     free(o->undo);
     free(o->pending);
     free(o->found);
+    free(o->kept);
+    free(o->redo.v);
+    free(o->again.v);
+    free(o->marked.v);
+    free(o->mark);
     vrResponder_Free(o->responder);
     free(o);
 }
@@ -259,7 +264,7 @@ int vrOwner_AddPairAt(vrOwner *o, int a, int b, double t, int flagged)
     p->a = a;
     p->b = b;
     p->order = vrPair_Order(a, b);
-    p->t_check = -INFINITY;
+    p->t_check = p->looked = -INFINITY;
     p->key = -INFINITY;
     p->quiet_until = -INFINITY;
     p->touch_t = -INFINITY;
@@ -327,7 +332,7 @@ void vrOwner_DropBody(vrOwner *o, int id)
     o->nheld--;
     vrBroad_BodyChanged(&o->bp, id);
     o->npending = 0;
-    o->nundo = 0;
+    o->nundo = o->nkept = o->redo.n = 0;
     reindex(o);
 }
 

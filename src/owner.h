@@ -32,6 +32,7 @@ typedef struct vrParams {
     vrFlight flight;
     int use_heap;
     int use_tree;        /* 1: box trees find the boxes that meet; 0: the sorted sweep */
+    int keep_looks;      /* 1: looks past an event at pairs it did not change are kept */
 } vrParams;
 
 /* SPEC 7's contact gap g_c = min(d, 1 mm): where impacts and rest act,
@@ -98,6 +99,10 @@ int vrOwner_Overlapping(vrOwner *o, double t, double tol, const int *ids, int ni
 int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *ev);
 /* every clock moves to t: keep what was learnt up to t, undo the rest */
 void vrOwner_Advance(vrOwner *o, double t);
+/* every clock moves to the event ev, to be answered next: the same, but
+ * with keep_looks the looks past it at pairs it does not change stand
+ * (those of the bodies its answer changes go at vrOwner_BodiesChanged) */
+void vrOwner_AdvanceTo(vrOwner *o, const vrEvent *ev);
 /* the new states of the bodies an event changes; -1 if the solve fails */
 int vrOwner_Respond(vrOwner *o, const vrEvent *ev, vrUpdate *up);
 void vrOwner_Stats(const vrOwner *o, vrOwnerStats *s);

@@ -29,6 +29,7 @@ typedef struct vrPair {
     int scheduled;            /* 0 when both bodies are frozen (static or resting) */
     int flagged;              /* to be evaluated at the next span start */
     double t_check;
+    double looked;            /* the grid point of its last look (kept looks are not made again) */
     double key;               /* expected earliest event (in the heap when scheduled and finite) */
     double quiet_until;       /* inside, but nothing can happen until then (quiet_slide) */
     double touch_t;           /* the last island step it touched at (vrOwner_Touching) */
@@ -45,8 +46,10 @@ typedef struct vrUndo {
     int pair;
     double at;                /* the evaluation time */
     int inside, near, overlap;
-    double t_check;
+    double t_check, looked;
     double key, quiet_until;
+    vrWalkCache cache;        /* where its walks start: in a tie (parallel faces) the distance's
+                                 last bits depend on it, so a look made again starts where it did */
 } vrUndo;
 
 typedef struct vrIntList { int n, cap; int *v; } vrIntList;
@@ -97,6 +100,17 @@ struct vrOwner {
     double pending_t;
     vrEvent *found;           /* scratch: the events of one grid point */
     int nfound, foundcap;
+    /* with p.keep_looks, a walk's looks past the event answered are kept
+     * for the pairs whose bodies it did not change (lookahead.c) */
+    struct vrKept { vrEvent ev; double point; } *kept;   /* their events, by the grid point found at */
+    int nkept, keptcap;
+    double kept_a, kept_h;    /* the grid the kept looks are on */
+    int keep_lost;            /* no memory to keep an event: the next answer takes every look back */
+    vrIntList redo;           /* pairs whose last look stopped short (a bisection past an event) */
+    vrIntList again;          /* kept pairs the heap gave at their own grid point: back into it */
+    vrIntList marked;         /* pairs whose looks are to be taken back, marked in mark[] */
+    unsigned char *mark;
+    int markcap;
     vrResponder *responder;
     vrRegionMemo memo[REGION_MEMO];
     long long checks, heap_pops;
@@ -142,6 +156,13 @@ int vrOwner_MakeFresh(vrOwner *o, double t);        /* the pairs of fresh bodies
 int vrOwner_MeetAll(vrOwner *o, int id);            /* lazy: every pair of id made (it meets everything) */
 void vrOwner_DropApart(vrOwner *o);                 /* lazy: records of pairs apart and quiet go */
 static inline int vrPair_Free(const vrPair *p) { return p->a < 0; }
+
+/* look_log.c: a look at pair pi at time `at` logged; its looks past the
+ * next answer taken back (it stopped short); the looks of the pairs of
+ * the bodies ids[0..n) taken back */
+void vrLook_Remember(vrOwner *o, int pi, double at);
+void vrLook_Redo(vrOwner *o, int pi);
+void vrOwner_TakeBackChanged(vrOwner *o, const int *ids, int n);
 
 /* dormancy.c */
 int vrPair_Apart(vrOwner *o, int pi);               /* cannot meet before the frame ends */

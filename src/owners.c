@@ -123,7 +123,7 @@ static int serial_first_event(vrWorld *w, const vrGrid *g, int allow, vrEvent *e
 
 static int serial_respond(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, size_t n)
 {
-    vrOwner_Advance(w->owner, ev->t);
+    vrOwner_AdvanceTo(w->owner, ev);
     if (vrOwner_Respond(w->owner, ev, up) != 0) return vrGeom_Fail(err, n, "collision response: the linear solve failed");
     return 0;
 }

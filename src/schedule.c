@@ -19,6 +19,8 @@ void vrSchedule_GridFor(double fastest, double ts, double T, double d, double in
     g->t0 = ts;
     g->T = T;
     g->frame_T = T;
+    g->a = ts;
+    g->k0 = 0;
     if (span <= 0) {          /* an event at the frame end: nothing left to step */
         g->n = 0;
         g->h = 0;
@@ -39,13 +41,47 @@ void vrSchedule_GridFor(double fastest, double ts, double T, double d, double in
     g->h = span / (double)g->n;
 }
 
-void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, double d,
-                     double internal_step, const vrFlight *f, vrGrid *g)
+void vrSchedule_AnchoredGrid(double fastest, double a, double ts, double T, double d, double internal_step,
+                             long *steps, vrGrid *g)
+{
+    vrGrid whole;
+    long N, j;
+    vrSchedule_GridFor(fastest, a, T, d, internal_step, &whole);   /* the whole step's at this reach */
+    if (!(ts > a) || !(T > ts)) {       /* the step's first span, or nothing left */
+        if (!(ts > a)) *steps = whole.n;
+        if (!(ts > a)) *g = whole;
+        else vrSchedule_GridFor(0, ts, T, d, internal_step, g);
+        return;
+    }
+    N = *steps < 1 ? whole.n : *steps;
+    while (N < whole.n) N *= 2;         /* a response raised the fastest reach */
+    *steps = N;
+    g->t0 = ts;
+    g->T = T;
+    g->frame_T = T;
+    g->a = a;
+    g->h = internal_step > 0 ? internal_step : (T - a) / (double)N;
+    j = (long)floor((ts - a) / g->h);
+    j = j < 0 ? 0 : j > N - 1 ? N - 1 : j;
+    while (j < N - 1 && a + (double)(j + 1) * g->h <= ts) j++;
+    while (j > 0 && a + (double)j * g->h > ts) j--;
+    g->k0 = j;
+    g->n = N - j;
+}
+
+double vrSchedule_Fastest(vrBody *const *bodies, int nbodies, double ts, double T, double internal_step,
+                          const vrFlight *f)
 {
     double fastest = 0;
     int i;
     for (i = 0; i < nbodies && vrSchedule_NeedsReach(ts, T, internal_step); i++) fastest = vr_max(fastest, vrSchedule_Reach(bodies[i], ts, T, f));
-    vrSchedule_GridFor(fastest, ts, T, d, internal_step, g);
+    return fastest;
+}
+
+void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, double d,
+                     double internal_step, const vrFlight *f, vrGrid *g)
+{
+    vrSchedule_GridFor(vrSchedule_Fastest(bodies, nbodies, ts, T, internal_step, f), ts, T, d, internal_step, g);
 }
 
 long vrSchedule_FirstPointAtOrAfter(const vrGrid *g, double t)
@@ -53,7 +89,7 @@ long vrSchedule_FirstPointAtOrAfter(const vrGrid *g, double t)
     long k;
     if (t <= g->t0) return 1;
     if (t > g->T) return g->n + 1;
-    k = (long)ceil((t - g->t0) / g->h);
+    k = (long)ceil((t - g->a) / g->h) - g->k0;
     if (k < 1) k = 1;
     if (k > g->n) k = g->n;
     while (k > 1 && vrGrid_Point(g, k - 1) >= t) k--;

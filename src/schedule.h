@@ -5,19 +5,34 @@
 
 #include "body.h"
 
-/* grid points t0 + k h, k = 1..n, the last one exactly T; frame_T is the
- * frame's end (>= T: a span ends at the next island step, SPEC 7) */
-typedef struct vrGrid { double t0, T, h; long n; double frame_T; } vrGrid;
+/* The grid of a span [t0, T]: points a + (k0 + k) h, k = 1..n, the last
+ * one exactly T, anchored at a, the start of the contact step the span is
+ * in (a <= t0 < a + (k0 + 1) h), so that a span started by an event has
+ * the points its step had before it: a pair whose bodies the event did not
+ * change looks at the same instants, over the same brackets, whatever
+ * events came before (see vrGrid_Before).  frame_T is the frame's end (>=
+ * T: a span ends at the next island step, SPEC 7). */
+typedef struct vrGrid { double t0, T, h; long n; double frame_T; double a; long k0; } vrGrid;
 
 static inline double vrGrid_Point(const vrGrid *g, long k)
 {
-    return k >= g->n ? g->T : k <= 0 ? g->t0 : g->t0 + (double)k * g->h;
+    return k >= g->n ? g->T : k <= 0 ? g->t0 : g->a + (double)(g->k0 + k) * g->h;
+}
+/* the anchored point before point k >= 1 (at or before t0 for k = 1): the
+ * bracket a look at point k bisects starts there, or later where either
+ * body's motion starts (the look-ahead's vrOwner_FirstEvent) */
+static inline double vrGrid_Before(const vrGrid *g, long k)
+{
+    return g->a + (double)(g->k0 + k - 1) * g->h;
 }
 
 /* SPEC 3.2: h_max = d / (2 max_i (s_i + w_i R_i)) over the free bodies;
  * internal_step > 0 forces h */
 void vrSchedule_Grid(vrBody *const *bodies, int nbodies, double ts, double T, double d,
                      double internal_step, const vrFlight *f, vrGrid *g);
+/* the largest of the free bodies' reach over [ts, T] (0 with a forced step) */
+double vrSchedule_Fastest(vrBody *const *bodies, int nbodies, double ts, double T, double internal_step,
+                          const vrFlight *f);
 /* a body's s_i + w_i R_i for the span [ts, T] (0 when not free) */
 double vrSchedule_Reach(const vrBody *b, double ts, double T, const vrFlight *f);
 /* its w_i R_i alone (a true sphere's turning moves no surface point) */
@@ -32,6 +47,12 @@ static inline int vrSchedule_NeedsReach(double ts, double T, double internal_ste
 }
 /* the grid of [ts, T] given the largest reach over the free bodies */
 void vrSchedule_GridFor(double fastest, double ts, double T, double d, double internal_step, vrGrid *g);
+/* The grid of the span [ts, T] of the contact step [a, T], on the step's
+ * anchored points: *steps (0 at the step's first span) is how many the
+ * step is cut into, doubled until the fastest reach fits (a refined grid
+ * keeps every point it had), never halved within the step. */
+void vrSchedule_AnchoredGrid(double fastest, double a, double ts, double T, double d, double internal_step,
+                             long *steps, vrGrid *g);
 /* the first k >= 1 whose grid point is at or after time t (n + 1 if none) */
 long vrSchedule_FirstPointAtOrAfter(const vrGrid *g, double t);
 

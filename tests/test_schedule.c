@@ -192,6 +192,31 @@ static int test_grid_follows_thesis_rule_without_spin(void)
     return 0;
 }
 
+/* A span started by an event inside a contact step keeps the step's
+ * points: those after the event are the first span's, bit for bit, and
+ * the bracket before its first point starts at the step's point before
+ * the event.  A faster reach halves the step; every old point stays. */
+static int test_a_span_keeps_its_contact_steps_points(void)
+{
+    vrGrid first, later, finer;
+    long steps = 0, k;
+    const double a = 0.3, T = 0.31, d = 0.25;
+    vrSchedule_AnchoredGrid(80, a, a, T, d, 0, &steps, &first);   /* 0.01 * 2 * 80 / 0.25 = 6.4 */
+    ENSURE(steps == 7 && first.n == 7 && vrGrid_Point(&first, 7) == T && vrGrid_Before(&first, 1) == a);
+    vrSchedule_AnchoredGrid(80, a, 0.3047, T, d, 0, &steps, &later);
+    printf("    after an event at 0.3047: %ld points from k0 = %ld\n", later.n, later.k0);
+    ENSURE(steps == 7 && later.k0 == 3 && later.n == 4 && vrGrid_Point(&later, later.n) == T);
+    for (k = 1; k < later.n; k++) ENSURE(vrGrid_Point(&later, k) == vrGrid_Point(&first, k + 3));
+    ENSURE(vrGrid_Before(&later, 1) == vrGrid_Point(&first, 3) && vrGrid_Before(&later, 1) < 0.3047);
+    ENSURE(vrSchedule_FirstPointAtOrAfter(&later, vrGrid_Point(&first, 5)) == 2);
+    vrSchedule_AnchoredGrid(200, a, 0.3047, T, d, 0, &steps, &finer);   /* 16 needed: 7 -> 14 -> 28 */
+    ENSURE(steps == 28 && finer.h == (T - a) / 28.0);
+    for (k = 1; k < 7; k++) ENSURE(vrGrid_Point(&first, k) == a + (double)(4 * k) * finer.h);
+    vrSchedule_AnchoredGrid(1, a, 0.305, T, d, 0, &steps, &finer);       /* never coarser within the step */
+    ENSURE(steps == 28);
+    return 0;
+}
+
 /* two 0.1 m spheres, no force: a at x0 moving +0.5 m/s, b at rest at 0 */
 static void closing_pair(vrBody *a, vrBody *b, double x0, vrFlight *f)
 {
@@ -266,7 +291,7 @@ static int test_impact_time_is_the_upper_end_after_48_halvings(void)
         double owner, halved;
         long long checks;
         closing_pair(&a, &b, x0[c], &f);
-        g.t0 = t0[c], g.T = g.frame_T = t0[c] + 20, g.n = 2000, g.h = 0.01;
+        g.t0 = g.a = t0[c], g.T = g.frame_T = t0[c] + 20, g.n = 2000, g.h = 0.01, g.k0 = 0;
         ENSURE(owner_and_halvings(&a, &b, &f, &g, 0.01, &owner, &halved, &checks));
         printf("    impact at %.17g s (exact %.17g s)\n", owner, (x0[c] + 0.2 + VR_CONTACT_GAP) / -0.5);
         ENSURE_MSG(owner == halved, "owner %.17g, 48 halvings %.17g", owner, halved);
@@ -298,7 +323,7 @@ static int test_a_bisection_past_an_event_found_stops(void)
         double owner, halved[2];
         long long alone[2], both;
         int i, first = order;          /* the pair with the earlier impact: 0 = bodies 0-1 */
-        g.t0 = 0, g.T = g.frame_T = 1, g.n = 100, g.h = 0.01;
+        g.t0 = g.a = 0, g.T = g.frame_T = 1, g.n = 100, g.h = 0.01, g.k0 = 0;
         for (i = 0; i < 2; i++) {       /* each pair alone, for its time and its queries */
             closing_pair(&s[2 * i], &s[2 * i + 1], x0[i == first ? 0 : 1], &f);
             ENSURE(owner_and_halvings(&s[2 * i], &s[2 * i + 1], &f, &g, 0.01, &owner, &halved[i], &alone[i]));
@@ -356,7 +381,7 @@ static int test_impact_times_of_spinning_boxes_are_48_halvings(void)
                       on_cube ? vec3_scale(rvec(1), 0.9) : vec3_zero(), &f);
         vrBody_Anchor(&b, 0, vec3_make(flat ? 0.5 + sym(0.14) : sym(0.3), sym(0.3), height),
                       vec3_make(sym(1), sym(1), -1 - 2 * uni()), q, flat ? vec3_zero() : vec3_scale(rvec(1), 0.9), &f);
-        g.t0 = 0, g.T = g.frame_T = 1, g.n = 1000 + (long)(500 * uni()), g.h = 1.0 / (double)g.n;
+        g.t0 = g.a = 0, g.T = g.frame_T = 1, g.n = 1000 + (long)(500 * uni()), g.h = 1.0 / (double)g.n, g.k0 = 0;
         if (!owner_and_halvings(&a, &b, &f, &g, d, &owner, &halved, &c)) continue;
         impacts++;
         checks += c;
@@ -481,6 +506,7 @@ static const vrTest tests[] = {
     TEST(test_key_never_overestimates),
     TEST(test_sphere_keys_are_exact_for_free_pairs),
     TEST(test_grid_follows_thesis_rule_without_spin),
+    TEST(test_a_span_keeps_its_contact_steps_points),
     TEST(test_impact_time_is_the_upper_end_after_48_halvings),
     TEST(test_a_bisection_past_an_event_found_stops),
     TEST(test_impact_times_of_spinning_boxes_are_48_halvings),

@@ -15,7 +15,7 @@
 #include "parallel/wire.h"
 #include "../tools/fuzz/lcm_replay.h"
 
-#define FRAME_NSTATES_AT 74   /* hash, run, seq, t (8 each), grid (40), two int8 */
+#define FRAME_NSTATES_AT 90   /* hash, run, seq, t (8 each), grid (56), two int8 */
 /* hash ... noverlap (110 bytes: approach and point are 32, records 8), with
  * noverlap = 0, then the answer's fields (62 bytes with nstates = 0) */
 #define EARLIEST_STRING_AT 172

@@ -264,9 +264,9 @@ static int sgp_overlapping(vrWorld *w, double tol, const int *ids, int nids, int
     vrGrid g;
     int i;
     (void)tol;                           /* workers use VR_START_OVERLAP */
-    g.t0 = g.T = g.frame_T = w->t;
+    g.t0 = g.T = g.frame_T = g.a = w->t;
     g.h = 0;
-    g.n = 0;
+    g.n = g.k0 = 0;
     for (;;) {
         s->seq++;
         s->error[0] = 0;

@@ -223,6 +223,7 @@ int vrWire_GetParams(const vroc_params_t *m, vrParams *p)
     p->flight.max_angular = m->max_angular;
     p->use_heap = m->heap != 0;
     p->use_tree = m->tree != 0;
+    p->keep_looks = 0;    /* a worker answers `advance` by taking every look past it back (the same bits) */
     return 0;
 }
 
@@ -233,6 +234,8 @@ void vrWire_PutGrid(vroc_grid_t *m, const vrGrid *g)
     m->h = g->h;
     m->n = g->n;
     m->frame_T = g->frame_T;
+    m->a = g->a;
+    m->k0 = g->k0;
 }
 
 /* a grid of more steps than a frame may take (VR_FRAME_STEPS_HARD_MAX)
@@ -241,12 +244,15 @@ void vrWire_PutGrid(vroc_grid_t *m, const vrGrid *g)
 int vrWire_GetGrid(const vroc_grid_t *m, vrGrid *g)
 {
     if (!isfinite(m->t0) || !isfinite(m->T) || !isfinite(m->h) || m->n < 0 || m->n > (int64_t)VR_FRAME_STEPS_HARD_MAX
-        || m->T < m->t0 || !(m->frame_T >= m->T) || !isfinite(m->frame_T))
+        || m->T < m->t0 || !(m->frame_T >= m->T) || !isfinite(m->frame_T) || !(m->a <= m->t0) || !isfinite(m->a)
+        || m->k0 < 0 || m->k0 > (int64_t)VR_FRAME_STEPS_HARD_MAX)
         return -1;
     g->t0 = m->t0;
     g->T = m->T;
     g->h = m->h;
     g->n = (long)m->n;
     g->frame_T = m->frame_T;
+    g->a = m->a;
+    g->k0 = (long)m->k0;
     return 0;
 }
