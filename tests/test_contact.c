@@ -217,7 +217,7 @@ static int test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance(
         for (j = i; j < 5; j++) {
             vrWalkCache warm;
             memset(&warm, 0, sizeof warm);
-            for (k = 0; k < 60; k++) {
+            for (k = 0; k < 600; k++) {
                 const vrShape *a = &f[i].s, *b = &f[j].s;
                 vec3 at = vec3_scale(rnd_unit(), rnd(0, 20)), dir = rnd_unit(), nq;
                 vrPose pa = vrPose_make(at, rnd_rotation()), pb;
