@@ -95,7 +95,7 @@ static void take_back_marked(vrOwner *o, double t)
 
 void vrOwner_AdvanceTo(vrOwner *o, const vrEvent *ev)
 {
-    int i;
+    int i, k = 0;
     if (!o->p.keep_looks || o->keep_lost || !marks_ready(o)) {
         vrOwner_Advance(o, ev->t);
         o->keep_lost = 0;
@@ -105,6 +105,9 @@ void vrOwner_AdvanceTo(vrOwner *o, const vrEvent *ev)
     for (i = 0; i < o->nundo; i++)
         if (o->pair[o->undo[i].pair].order == ev->order) mark_pair(o, o->undo[i].pair);
     take_back_marked(o, ev->t);
+    for (i = 0; i < o->nkept; i++)
+        if (o->kept[i].ev.order != ev->order) o->kept[k++] = o->kept[i];
+    o->nkept = k;
     o->redo.n = 0;
     if (o->pending_t != ev->t) o->npending = 0;
 }

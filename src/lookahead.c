@@ -20,13 +20,15 @@
 #include "owner_state.h"
 #include "grow.h"
 
-/* the events kept for grid point t join those found there */
-static void kept_events_at(vrOwner *o, double t)
+/* the events kept for grid point t join those found there; those kept
+ * for a point at or before a span start t (with before = 1) go: an event
+ * at the start itself is a pending one (span_start) */
+static void kept_events_at(vrOwner *o, double t, int before)
 {
     int i, k = 0;
     for (i = 0; i < o->nkept; i++) {
-        if (o->kept[i].point == t) vrEvents_Push(&o->found, &o->nfound, &o->foundcap, &o->kept[i].ev);
-        else o->kept[k++] = o->kept[i];
+        if (o->kept[i].point == t && !before) vrEvents_Push(&o->found, &o->nfound, &o->foundcap, &o->kept[i].ev);
+        else if (!(before && o->kept[i].point <= t) && o->kept[i].point != t) o->kept[k++] = o->kept[i];
     }
     o->nkept = k;
 }
@@ -139,8 +141,11 @@ static int take_first(vrOwner *o, double at, vrEvent *ev)
     for (i = 0; i < o->nfound; i++)
         if (o->found[i].t == at) vrEvents_Push(&o->pending, &o->npending, &o->pendcap, &o->found[i]);
     o->pending_t = at;
-    /* the others, found before the grid point, are kept with their looks */
-    for (i = 1; o->p.keep_looks && ev->t != at && i < o->nfound; i++) {
+    /* they are kept with their looks: the first too, which is not the
+     * answer when another owner's comes first (the answered one goes at
+     * vrOwner_AdvanceTo), and those at the grid point itself, pending only
+     * while the answer is at that instant */
+    for (i = 0; o->p.keep_looks && i < o->nfound; i++) {
         if (vrGrow((void **)&o->kept, &o->keptcap, o->nkept + 1, sizeof *o->kept) != 0) {
             o->keep_lost = 1;                   /* no memory: nothing is kept past the answer */
             break;
@@ -236,12 +241,13 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     if (o->p.keep_looks && (!allow_instant || !(g->a == o->kept_a && g->h == o->kept_h))) vrOwner_Advance(o, g->t0);
     o->kept_a = g->a;
     o->kept_h = g->h;
+    kept_events_at(o, g->t0, 1);
     span_start(o, g->t0, allow_instant);
     if (o->nfound) return take_first(o, g->t0, ev);
     while (k <= g->n) {
         double t = vrGrid_Point(g, k), key;
         collect_due(o, t);
-        kept_events_at(o, t);
+        kept_events_at(o, t, 0);
         o->defer_keys = 1;
         for (i = 0; i < o->due.n; i++)
             if (!kept_look(o, o->due.v[i], t, o->p.use_heap)) evaluate_into_found(o, o->due.v[i], t, vrGrid_Before(g, k), 1);

@@ -283,7 +283,9 @@ static int test_touching_tops_match_serial(void)
     vrRun three = run(tops, 3, "memq://", VR_DIST_IMPROVED, 150);
     ENSURE(!serial.failed && !no_heap.failed && !two.failed && !three.failed);
     printf("    %lld responses\n", serial.stats.collisions);
-    ENSURE(no_heap.hash == serial.hash && two.hash == serial.hash && three.hash == serial.hash);
+    ENSURE_MSG(no_heap.hash == serial.hash && two.hash == serial.hash && three.hash == serial.hash,
+               "serial %llx, heap off %llx, 2 workers %llx, 3 workers %llx", serial.hash, no_heap.hash, two.hash,
+               three.hash);
     return 0;
 }
 

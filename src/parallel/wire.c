@@ -210,6 +210,7 @@ void vrWire_PutParams(vroc_params_t *m, const vrParams *p)
     m->max_angular = p->flight.max_angular;
     m->heap = (int8_t)p->use_heap;
     m->tree = (int8_t)p->use_tree;
+    m->keep = (int8_t)p->keep_looks;
 }
 
 int vrWire_GetParams(const vroc_params_t *m, vrParams *p)
@@ -223,7 +224,7 @@ int vrWire_GetParams(const vroc_params_t *m, vrParams *p)
     p->flight.max_angular = m->max_angular;
     p->use_heap = m->heap != 0;
     p->use_tree = m->tree != 0;
-    p->keep_looks = 0;    /* a worker answers `advance` by taking every look past it back (the same bits) */
+    p->keep_looks = m->keep != 0;
     return 0;
 }
 

@@ -176,7 +176,7 @@ static void take_advance(vrWorker *k, const vroc_advance_t *m)
     if (k->silent || m->responder != k->gp) return;
     if (!k->has_first || k->first.order != m->order || k->first.t != m->t) return;
     k->busy_from = vrLink_NowMs();
-    vrOwner_Advance(k->owner, m->t);
+    vrOwner_AdvanceTo(k->owner, &k->first);
     if (!k->answered) answer_ahead(k);
     if (!k->answered) return;            /* silence: the SGP gives up on us */
     vrWorker_Settle(k, 1);
@@ -200,6 +200,23 @@ static void take_advance(vrWorker *k, const vroc_advance_t *m)
     vrWorker_NoteBusy(k);
 }
 
+/* Every clock to the answered event's time.  With keep_looks the looks
+ * past it stand but for the answered pair's (when the answer was ours, in
+ * our earliest) and the changed bodies' (vrWorker_ApplyStates); an
+ * answer the SGP asked for (take_advance) took its pair's back already. */
+static void advance_to_answer(vrWorker *k, const vroc_update_t *m)
+{
+    vrEvent none;
+    if (m->taken == k->gp && k->has_first && k->first.t == m->t) {
+        vrOwner_AdvanceTo(k->owner, &k->first);
+        return;
+    }
+    memset(&none, 0, sizeof none);
+    none.t = m->t;
+    none.order = -1;                     /* no pair of ours */
+    vrOwner_AdvanceTo(k->owner, &none);
+}
+
 static void take_forward(vrWorker *k, const vroc_update_t *m)
 {
     const char *bad;
@@ -212,7 +229,7 @@ static void take_forward(vrWorker *k, const vroc_update_t *m)
         vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, bad);
         return;
     }
-    vrOwner_Advance(k->owner, m->t);
+    advance_to_answer(k, m);
     if (vrWorker_ApplyStates(k, m->states, m->nstates) != 0) vrWorker_SendEarliest(k, m->seq, 0, NULL, 0, NULL, NULL, "bad body state");
     else look_ahead(k, m->seq, &m->grid, m->allow_instant);
 }
