@@ -156,12 +156,15 @@ static int take_first(vrOwner *o, double at, vrEvent *ev)
     return 1;
 }
 
-/* pair pi was looked at at grid point t by a walk before this one: that
- * look stands (keep_looks), and one the heap gave goes back into it after
- * this point, due at the next, as after a look made now */
+/* pair pi was looked at at grid point t, or a later one, by a walk before
+ * this one: that look stands (keep_looks; a worker's walk goes past the
+ * answer to its own first event, so its pairs may hold looks at several
+ * points, and one looked at again at an earlier point would start from the
+ * later look's state), and one the heap gave goes back into it after this
+ * point, due at the next, as after a look made now */
 static int kept_look(vrOwner *o, int pi, double t, int from_heap)
 {
-    if (!(o->p.keep_looks && o->pair[pi].looked == t)) return 0;
+    if (!(o->p.keep_looks && o->pair[pi].looked >= t)) return 0;
     if (from_heap && vrIntList_Push(&o->again, pi) != 0) {
         o->keep_lost = 1;      /* no memory: looked at again (the next answer takes every look back) */
         return 0;
