@@ -20,15 +20,16 @@
 #include "owner_state.h"
 #include "grow.h"
 
-/* the events kept for grid point t join those found there; those kept
- * for a point at or before a span start t (with before = 1) go: an event
- * at the start itself is a pending one (span_start) */
-static void kept_events_at(vrOwner *o, double t, int before)
+/* The events kept for points after t stay; with take, those kept for
+ * point t join the events found there.  At a span start t (take = 0) those
+ * kept for t or before go: an event at the start itself is a pending one
+ * (span_start), and the walk visits its points in order. */
+static void kept_events_at(vrOwner *o, double t, int take)
 {
     int i, k = 0;
     for (i = 0; i < o->nkept; i++) {
-        if (o->kept[i].point == t && !before) vrEvents_Push(&o->found, &o->nfound, &o->foundcap, &o->kept[i].ev);
-        else if (!(before && o->kept[i].point <= t) && o->kept[i].point != t) o->kept[k++] = o->kept[i];
+        if (o->kept[i].point > t) o->kept[k++] = o->kept[i];
+        else if (take && o->kept[i].point == t) vrEvents_Push(&o->found, &o->nfound, &o->foundcap, &o->kept[i].ev);
     }
     o->nkept = k;
 }
@@ -244,13 +245,13 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     if (o->p.keep_looks && (!allow_instant || !(g->a == o->kept_a && g->h == o->kept_h))) vrOwner_Advance(o, g->t0);
     o->kept_a = g->a;
     o->kept_h = g->h;
-    kept_events_at(o, g->t0, 1);
+    kept_events_at(o, g->t0, 0);
     span_start(o, g->t0, allow_instant);
     if (o->nfound) return take_first(o, g->t0, ev);
     while (k <= g->n) {
         double t = vrGrid_Point(g, k), key;
         collect_due(o, t);
-        kept_events_at(o, t, 0);
+        kept_events_at(o, t, 1);
         o->defer_keys = 1;
         for (i = 0; i < o->due.n; i++)
             if (!kept_look(o, o->due.v[i], t, o->p.use_heap)) evaluate_into_found(o, o->due.v[i], t, vrGrid_Before(g, k), 1);

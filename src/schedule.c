@@ -47,10 +47,13 @@ void vrSchedule_AnchoredGrid(double fastest, double a, double ts, double T, doub
     vrGrid whole;
     long N, j;
     vrSchedule_GridFor(fastest, a, T, d, internal_step, &whole);   /* the whole step's at this reach */
-    if (!(ts > a) || !(T > ts)) {       /* the step's first span, or nothing left */
-        if (!(ts > a)) *steps = whole.n;
-        if (!(ts > a)) *g = whole;
-        else vrSchedule_GridFor(0, ts, T, d, internal_step, g);
+    if (!(ts > a)) {                    /* the step's first span */
+        *steps = whole.n;
+        *g = whole;
+        return;
+    }
+    if (!(T > ts)) {                    /* nothing left */
+        vrSchedule_GridFor(0, ts, T, d, internal_step, g);
         return;
     }
     N = *steps < 1 ? whole.n : *steps;

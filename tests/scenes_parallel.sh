@@ -18,6 +18,18 @@ passed=0 failed=0
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
+# agrees WHAT SERIAL PAR ERR: the run PAR printed SERIAL's text, and
+# nothing on its standard error ERR
+agrees() {
+    if [ -s "$2" ] && cmp -s "$2" "$3" && [ ! -s "$4" ]; then
+        passed=$((passed + 1))
+    else
+        echo "FAIL $1 differ from the serial run"
+        diff "$2" "$3" | head -5; head -3 "$4"
+        failed=$((failed + 1))
+    fi
+}
+
 # the scene without its `start`, then a fixed number of frames and a dump
 run() { # run SCENE GPS DISTRIBUTION OUT [URL]
     { printf 'gps = %s\ndistribution = %s\n' "$2" "$3"
@@ -36,13 +48,7 @@ for scene in simple desks basketball office bounce; do
         "2 round_robin" "3 improved"; do
         set -- $cfg
         run "$scene" "$1" "$2" "$tmp/par" "${3:-}"
-        if [ -s "$tmp/serial" ] && cmp -s "$tmp/serial" "$tmp/par" && [ ! -s "$tmp/par.err" ]; then
-            passed=$((passed + 1))
-        else
-            echo "FAIL $scene: $1 workers ($2${3:+, $3}) differ from the serial run"
-            diff "$tmp/serial" "$tmp/par" | head -5; head -3 "$tmp/par.err"
-            failed=$((failed + 1))
-        fi
+        agrees "$scene: $1 workers ($2${3:+, $3})" "$tmp/serial" "$tmp/par" "$tmp/par.err"
     done
 done
 # Issue 29: scaled OFF hulls (the workers get the scaled vertices as text)
@@ -83,13 +89,7 @@ for cfg in "2 memq://" "2" "3"; do
     set -- $cfg
     clamp_scene "$1" "${2:-}" | "$vroc" -q 2>"$tmp/c.err" |
         sed -E 's/ [a-z_]+_ms=[0-9.]+//g; s/ (gps|messages|copies|gp_[a-z]+|foreign|malformed|live_pairs)=[^ ]*//g; s/ (checks|heap_pops|klu_[a-z]+)=[0-9]+//g' >"$tmp/c.par"
-    if [ -s "$tmp/c.serial" ] && cmp -s "$tmp/c.serial" "$tmp/c.par" && [ ! -s "$tmp/c.err" ]; then
-        passed=$((passed + 1))
-    else
-        echo "FAIL scaled hulls and clamps: $1 workers${2:+ ($2)} differ from the serial run"
-        diff "$tmp/c.serial" "$tmp/c.par" | head -5; head -3 "$tmp/c.err"
-        failed=$((failed + 1))
-    fi
+    agrees "scaled hulls and clamps: $1 workers${2:+ ($2)}" "$tmp/c.serial" "$tmp/c.par" "$tmp/c.err"
 done
 # kept looks (keep_looks): a worker's walk goes past the answer to its own
 # first event, so its pairs hold kept looks at several grid points; the
@@ -102,13 +102,7 @@ keep_scene() { # keep_scene GPS OUT
 keep_scene 0 "$tmp/k.serial"
 for g in 2 3; do
     keep_scene "$g" "$tmp/k.par"
-    if [ -s "$tmp/k.serial" ] && cmp -s "$tmp/k.serial" "$tmp/k.par" && [ ! -s "$tmp/k.par.err" ]; then
-        passed=$((passed + 1))
-    else
-        echo "FAIL kept looks (fuzzer seed 318): $g workers differ from the serial run"
-        diff "$tmp/k.serial" "$tmp/k.par" | head -5; head -3 "$tmp/k.par.err"
-        failed=$((failed + 1))
-    fi
+    agrees "kept looks (fuzzer seed 318): $g workers" "$tmp/k.serial" "$tmp/k.par" "$tmp/k.par.err"
 done
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]

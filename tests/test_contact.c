@@ -276,6 +276,26 @@ static int test_walk_and_canonical_distance_under_a_long_edge(void)
     return 0;
 }
 
+/* The starts of a walk between two boxes: every pair of their features
+ * (8 vertices, 12 edges, 6 faces each), vertices first, as k runs over
+ * 0..BOX_STARTS-1 */
+#define BOX_FEATURES 26
+#define BOX_STARTS (BOX_FEATURES * BOX_FEATURES)
+static vrFeature box_feature(int f)
+{
+    return f < 8 ? vrFeature_Make(VR_VERTEX, f) : f < 20 ? vrFeature_Make(VR_EDGE, f - 8) : vrFeature_Make(VR_FACE, f - 20);
+}
+
+static vrWalkCache box_start(int k)
+{
+    vrWalkCache c;
+    memset(&c, 0, sizeof c);
+    c.a = box_feature(k / BOX_FEATURES);
+    c.b = box_feature(k % BOX_FEATURES);
+    c.valid = 1;
+    return c;
+}
+
 /* The canonical distance of boxes a and b (half sizes ha, hb, poses pa, pb)
  * from every start cache, against brute force (touching counts as 0);
  * returns how many starts disagree by more than 1e-9 m, or give other
@@ -285,24 +305,20 @@ static int disagreements(vec3 ha, vrPose pa, vec3 hb, vrPose pb, double *brute)
     Fix a, b;
     vrWalkCache cache;
     vrContact c, first;
-    int ta, ia, tb, ib, bad = 0, n = 0;
+    int k, bad = 0, n = 0;
     if (box(&a, ha.x, ha.y, ha.z) != 0 || box(&b, hb.x, hb.y, hb.z) != 0) return -1;
     *brute = vrClosest_BruteForce(a.s.poly, &pa, b.s.poly, &pb);
-    for (ta = 0; ta < 3; ta++)
-        for (ia = 0; ia < 12; ia++)
-            for (tb = 0; tb < 3; tb++)
-                for (ib = 0; ib < 12; ib++) {
-                    if ((ta == VR_VERTEX && ia >= 8) || (ta == VR_FACE && ia >= 6)) continue;
-                    if ((tb == VR_VERTEX && ib >= 8) || (tb == VR_FACE && ib >= 6)) continue;
-                    memset(&cache, 0, sizeof cache);
-                    cache.a.type = ta, cache.a.index = ia, cache.b.type = tb, cache.b.index = ib;
-                    cache.valid = 1;
-                    if (vrContact_Distance(&a.s, &pa, &b.s, &pb, &cache, &c) != 0 || fabs(fmax(c.dist, 0) - *brute) > 1e-9
-                        || (n++ && (memcmp(&c.dist, &first.dist, sizeof c.dist) || memcmp(&c.n, &first.n, sizeof c.n)))) {
-                        if (!bad++) printf("    from (%d,%d)/(%d,%d): %.17g, brute force %.17g\n", ta, ia, tb, ib, c.dist, *brute);
-                    }
-                    if (n == 1) first = c;
-                }
+    for (k = 0; k < BOX_STARTS; k++) {
+        cache = box_start(k);
+        if (vrContact_Distance(&a.s, &pa, &b.s, &pb, &cache, &c) != 0 || fabs(fmax(c.dist, 0) - *brute) > 1e-9
+            || (n++ && (memcmp(&c.dist, &first.dist, sizeof c.dist) || memcmp(&c.n, &first.n, sizeof c.n)))) {
+            vrWalkCache from = box_start(k);
+            if (!bad++)
+                printf("    from (%d,%d)/(%d,%d): %.17g, brute force %.17g\n", from.a.type, from.a.index, from.b.type,
+                       from.b.index, c.dist, *brute);
+        }
+        if (n == 1) first = c;
+    }
     unfix(&a);
     unfix(&b);
     return bad;
@@ -356,27 +372,17 @@ static int test_overlapping_stack_boxes_are_seen_overlapping_from_every_start(vo
                             quat_make(0.99043092809455568, -0.001380418706499475, -0.0010485364890873241, 0.13799844814048823));
     vrPose pb = vrPose_make(vec3_make(-0.84256668441260107, 0.66489480965250047, 0.32973537848550039),
                             quat_make(0.99989641411012353, -0.0012392142806812343, -0.0012116362248460451, 0.014288363634148347));
-    int ta, ia, tb, ib, apart = 0, n = 0;
+    int k, apart = 0, n = 0;
     ENSURE(box(&a, 0.138565, 0.136574, 0.0723755) == 0 && box(&b, 0.115443, 0.0970096, 0.0737839) == 0);
     ENSURE(vrClosest_BruteForce(a.s.poly, &pa, b.s.poly, &pb) == 0);
-    for (ta = 0; ta < 3; ta++)
-        for (ia = 0; ia < 12; ia++)
-            for (tb = 0; tb < 3; tb++)
-                for (ib = 0; ib < 12; ib++) {
-                    vrWalkCache cache;
-                    int pen;
-                    double dw;
-                    if ((ta == VR_VERTEX && ia >= 8) || (ta == VR_FACE && ia >= 6)) continue;
-                    if ((tb == VR_VERTEX && ib >= 8) || (tb == VR_FACE && ib >= 6)) continue;
-                    memset(&cache, 0, sizeof cache);
-                    cache.a.type = ta, cache.a.index = ia, cache.b.type = tb, cache.b.index = ib;
-                    cache.valid = 1;
-                    dw = vrClosest_Walk(a.s.poly, &pa, b.s.poly, &pb, &cache, NULL, NULL, NULL, &pen);
-                    cache.a.type = ta, cache.a.index = ia, cache.b.type = tb, cache.b.index = ib;
-                    if (!(pen || dw <= VR_QUICK_TOL) || !vrContact_Within(&a.s, &pa, &b.s, &pb, &cache, 0, NULL))
-                        apart++;
-                    n++;
-                }
+    for (k = 0; k < BOX_STARTS; k++) {
+        vrWalkCache cache = box_start(k), start = cache;
+        int pen;
+        double dw = vrClosest_Walk(a.s.poly, &pa, b.s.poly, &pb, &cache, NULL, NULL, NULL, &pen);
+        cache.a = start.a, cache.b = start.b;
+        if (!(pen || dw <= VR_QUICK_TOL) || !vrContact_Within(&a.s, &pa, &b.s, &pb, &cache, 0, NULL)) apart++;
+        n++;
+    }
     unfix(&a);
     unfix(&b);
     printf("    %d of %d starts see the boxes apart\n", apart, n);
@@ -399,25 +405,17 @@ static int test_cubes_side_by_side_are_their_gap_apart_from_every_start(void)
     vrPose pb = vrPose_make(vec3_make(-1.2451751979999677, -1.2417316442324673, 0.15099999998838309),
                             quat_make(-3.6063635268083932e-11, 0.98910896305990159, 0.14718511879455221, 1.8443540402352985e-11));
     double first = NAN, worst = 0;
-    int ta, ia, tb, ib, bad = 0, n = 0;
+    int k, bad = 0, n = 0;
     ENSURE(box(&a, 0.15, 0.15, 0.15) == 0 && box(&b, 0.15, 0.15, 0.15) == 0);
-    for (ta = 0; ta < 3; ta++)
-        for (ia = 0; ia < 12; ia++)
-            for (tb = 0; tb < 3; tb++)
-                for (ib = 0; ib < 12; ib++) {
-                    vrWalkCache cache;
-                    vrContact c;
-                    if ((ta == VR_VERTEX && ia >= 8) || (ta == VR_FACE && ia >= 6)) continue;
-                    if ((tb == VR_VERTEX && ib >= 8) || (tb == VR_FACE && ib >= 6)) continue;
-                    memset(&cache, 0, sizeof cache);
-                    cache.a.type = ta, cache.a.index = ia, cache.b.type = tb, cache.b.index = ib;
-                    cache.valid = 1;
-                    vrContact_Distance(&a.s, &pa, &b.s, &pb, &cache, &c);
-                    if (isnan(first)) first = c.dist;
-                    if (fabs(c.dist - first) > worst) worst = fabs(c.dist - first);
-                    if (!(fabs(c.dist - 1.0227388e-3) < 1e-9 && fabs(c.n.z) < 1e-9)) bad++;
-                    n++;
-                }
+    for (k = 0; k < BOX_STARTS; k++) {
+        vrWalkCache cache = box_start(k);
+        vrContact c;
+        vrContact_Distance(&a.s, &pa, &b.s, &pb, &cache, &c);
+        if (isnan(first)) first = c.dist;
+        if (fabs(c.dist - first) > worst) worst = fabs(c.dist - first);
+        if (!(fabs(c.dist - 1.0227388e-3) < 1e-9 && fabs(c.n.z) < 1e-9)) bad++;
+        n++;
+    }
     unfix(&a);
     unfix(&b);
     printf("    %d of %d starts off the gap (1.0227 mm, level normal); distances within %.3g m\n", bad, n, worst);
@@ -437,28 +435,19 @@ static void side_by_side(vec3 ha, vrPose pa, vec3 hb, vrPose pb, int *wrong, int
 {
     Fix a, b;
     double brute, first = NAN;
-    int ta, ia, tb, ib, w = 0, u = 0;
+    int k, w = 0, u = 0;
     if (box(&a, ha.x, ha.y, ha.z) != 0 || box(&b, hb.x, hb.y, hb.z) != 0) {
         (*wrong)++;
         return;
     }
     brute = vrClosest_BruteForce(a.s.poly, &pa, b.s.poly, &pb);
-    for (ta = 0; ta < 3; ta++)
-        for (ia = 0; ia < 12; ia++)
-            for (tb = 0; tb < 3; tb++)
-                for (ib = 0; ib < 12; ib++) {
-                    vrWalkCache cache;
-                    vrContact c;
-                    if ((ta == VR_VERTEX && ia >= 8) || (ta == VR_FACE && ia >= 6)) continue;
-                    if ((tb == VR_VERTEX && ib >= 8) || (tb == VR_FACE && ib >= 6)) continue;
-                    memset(&cache, 0, sizeof cache);
-                    cache.a.type = ta, cache.a.index = ia, cache.b.type = tb, cache.b.index = ib;
-                    cache.valid = 1;
-                    if (vrContact_Distance(&a.s, &pa, &b.s, &pb, &cache, &c) != 0 || fabs(fmax(c.dist, 0) - brute) > 1e-9)
-                        w = 1;
-                    if (isnan(first)) first = c.dist;
-                    else if (memcmp(&c.dist, &first, sizeof first) != 0) u = 1;
-                }
+    for (k = 0; k < BOX_STARTS; k++) {
+        vrWalkCache cache = box_start(k);
+        vrContact c;
+        if (vrContact_Distance(&a.s, &pa, &b.s, &pb, &cache, &c) != 0 || fabs(fmax(c.dist, 0) - brute) > 1e-9) w = 1;
+        if (isnan(first)) first = c.dist;
+        else if (memcmp(&c.dist, &first, sizeof first) != 0) u = 1;
+    }
     unfix(&a);
     unfix(&b);
     *wrong += w;
