@@ -19,6 +19,7 @@
 #include <time.h>
 #include "vroc.h"
 #include "scene.h"
+#include "parallel/link.h"
 
 #define UDPM "udpm://239.255.76.67:7667?ttl=0"
 
@@ -150,22 +151,25 @@ static int test_no_worker_left_is_a_clear_error(void)
     return 0;
 }
 
-/* an intruder floods every channel with garbage and with well-formed
- * messages of another run while the workers run */
+/* an intruder floods every channel, on the requests' port and on the
+ * answers' (parallel/link.h), with garbage and with well-formed messages
+ * of another run while the workers run */
 static pid_t start_intruder(void)
 {
     pid_t pid = fork();
     if (pid == 0) {
         static const char *const ch[] = {"VROC_EARLIEST", "VROC_UPDATE", "VROC_HELLO", "VROC_FRAME",
                                          "VROC_ADVANCE", "VROC_FORWARD", "VROC_SETUP"};
-        lcm_t *l = lcm_create(UDPM);
+        char answers[256];
+        lcm_t *l = lcm_create(UDPM), *up = NULL;
         unsigned char junk[64];
         unsigned k;
-        for (k = 0; l; k++) {
+        if (vrLink_AnswerUrl(UDPM, answers, sizeof answers) == 0) up = lcm_create(answers);
+        for (k = 0; l && up; k++) {
             struct timespec pause = {0, 500000};
             memset(junk, (int)k, sizeof junk);
             junk[0] = (unsigned char)(k * 7);
-            lcm_publish(l, ch[k % 7], junk, 1 + k % sizeof junk);
+            lcm_publish(k & 1 ? up : l, ch[(k / 2) % 7], junk, 1 + k % sizeof junk);
             nanosleep(&pause, NULL);
         }
         _exit(1);

@@ -111,7 +111,7 @@ static int test_messages_the_fuzzer_crashed_a_worker_with_are_dropped(void)
     struct dirent *e;
     int n = 0;
     ENSURE_MSG(d, "no tests/data/fuzz_lcm (run from the repository root)");
-    ENSURE(vrLink_Open(&link, "memq://", err, sizeof err) == 0);
+    ENSURE(vrLink_Open(&link, "memq://", VR_LINK_SGP, err, sizeof err) == 0);
     while ((e = readdir(d)) != NULL) {
         if (strncmp(e->d_name, "crash-", 6) != 0 && strncmp(e->d_name, "hang-", 5) != 0) continue;
         snprintf(path, sizeof path, "tests/data/fuzz_lcm/%s", e->d_name);
@@ -121,6 +121,25 @@ static int test_messages_the_fuzzer_crashed_a_worker_with_are_dropped(void)
     closedir(d);
     vrLink_Close(&link);
     ENSURE_MSG(n >= 69, "only %d inputs in tests/data/fuzz_lcm", n);
+    return 0;
+}
+
+/* answers travel on the port after the requests' (link.h), whatever the
+ * URL's options; a URL without a port has LCM's 7667; memq:// and
+ * malformed ports keep one channel */
+static int test_answers_go_on_the_next_port(void)
+{
+    char out[128];
+    ENSURE(vrLink_AnswerUrl("udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304", out, sizeof out) == 0);
+    ENSURE_MSG(strcmp(out, "udpm://239.255.76.67:7668?ttl=0&recv_buf_size=4194304") == 0, "%s", out);
+    ENSURE(vrLink_AnswerUrl("udpm://239.255.76.67", out, sizeof out) == 0);
+    ENSURE_MSG(strcmp(out, "udpm://239.255.76.67:7668") == 0, "%s", out);
+    ENSURE(vrLink_AnswerUrl("udpm://239.1.2.3:9000?ttl=1", out, sizeof out) == 0);
+    ENSURE_MSG(strcmp(out, "udpm://239.1.2.3:9001?ttl=1") == 0, "%s", out);
+    ENSURE(vrLink_AnswerUrl("memq://", out, sizeof out) != 0);
+    ENSURE(vrLink_AnswerUrl("udpm://239.1.2.3:x?ttl=1", out, sizeof out) != 0);
+    ENSURE(vrLink_AnswerUrl("udpm://239.1.2.3:65535", out, sizeof out) != 0);
+    ENSURE(vrLink_AnswerUrl("udpm://239.1.2.3:7667", out, 10) != 0);
     return 0;
 }
 
@@ -141,6 +160,7 @@ static int test_grids_past_a_frames_steps_are_refused(void)
 }
 
 static const vrTest tests[] = {
+    TEST(test_answers_go_on_the_next_port),
     TEST(test_grids_past_a_frames_steps_are_refused),
     TEST(test_array_counts_past_the_message_are_refused),
     TEST(test_strings_that_do_not_fit_or_end_are_refused),

@@ -1,5 +1,12 @@
 /* link.h — LCM as the transport between the SGP and its workers (SPEC 5).
  *
+ * Over UDP multicast the two directions are two groups' ports: requests
+ * go on the URL's port, answers on the port after it.  Every socket on a
+ * port is woken by every datagram sent to it, so on one port each worker
+ * woke for the other workers' answers and the SGP for its own requests
+ * (9 wake-ups a round with 2 workers, 4 now).  memq:// and other
+ * providers keep one instance for both.
+ *
  * Messages are LCM types (the .lcm files beside this one, C code generated at build
  * time).  Receivers subscribe raw and decode themselves, so that a
  * malformed message is counted and dropped instead of printed.  For tests,
@@ -14,13 +21,19 @@
 #include <lcm/lcm.h>
 
 typedef struct vrLink {
-    lcm_t *lcm;
+    lcm_t *lcm;                        /* what this side receives (and, with one instance, sends) */
+    lcm_t *out;                        /* what it sends on: lcm, or the other direction's port */
     double drop, dup;                  /* fault injection, probabilities */
     unsigned long long rng;
     long long sent, dropped;
 } vrLink;
 
-int vrLink_Open(vrLink *l, const char *url, char *err, size_t n);
+/* which direction a side listens to */
+enum { VR_LINK_SGP, VR_LINK_WORKER };
+int vrLink_Open(vrLink *l, const char *url, int side, char *err, size_t n);
+/* the URL answers travel on (udpm://: the port after url's), in out[0..n);
+ * 0, or -1 when url has one channel for both directions */
+int vrLink_AnswerUrl(const char *url, char *out, size_t n);
 void vrLink_Close(vrLink *l);
 int vrLink_Publish(vrLink *l, const char *channel, const void *data, int len);
 /* waits up to ms for messages and dispatches them to the subscribers */

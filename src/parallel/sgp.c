@@ -247,7 +247,7 @@ static void sgp_end_frame(vrWorld *w, double T)
     s->frame_open = s->frame_fresh = 0;
     s->snap_pending.n = 0;
     if (strncmp(s->url, "memq://", 7) != 0
-        && vrSounds_Publish(s->link.lcm, w->sounds.ev, w->sounds.n, vrSounds_Name(&w->s)) != 0)
+        && vrSounds_Publish(s->link.out, w->sounds.ev, w->sounds.n, vrSounds_Name(&w->s)) != 0)
         s->sound_failed = 1;
 }
 

@@ -76,7 +76,7 @@ vrSgp *vrSgp_Open(const vrSettings *st, char *err, size_t n)
         vrSgp_Free(s);
         return NULL;
     }
-    if (vrLink_Open(&s->link, s->url, err, n) != 0) {
+    if (vrLink_Open(&s->link, s->url, VR_LINK_SGP, err, n) != 0) {
         vrSgp_Free(s);
         return NULL;
     }

@@ -377,7 +377,7 @@ int vrWorker_Main(const char *url, long long nonce, int forked, char *err, size_
     vrLink link;
     vrWorker *k;
     double last = 0;
-    if (vrLink_Open(&link, url, err, n) != 0) return -1;
+    if (vrLink_Open(&link, url, VR_LINK_WORKER, err, n) != 0) return -1;
     k = vrWorker_Create(&link, nonce, forked);
     if (!k) {
         vrLink_Close(&link);

@@ -12,7 +12,7 @@ static void fuzz_one(const unsigned char *data, size_t len)
     static vrLink link;
     static int open;
     char err[256];
-    if (!open && vrLink_Open(&link, "memq://", err, sizeof err) != 0) abort();
+    if (!open && vrLink_Open(&link, "memq://", VR_LINK_SGP, err, sizeof err) != 0) abort();
     open = 1;
     if (lcm_replay(&link, data, len) != 0) abort();
 }
