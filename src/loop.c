@@ -164,10 +164,25 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
     }
 }
 
+/* the look-ahead the contact step [at, end] starts with if its island
+ * step changes nothing: run_span's first grid, when it is not refused */
+static void expect_look_ahead(vrWorld *w, const Frame *f, double at, double end, const vrParams *p)
+{
+    long steps = 0;
+    span_grid(w, at, &steps, at, end, f->T, p, &w->ahead.g);
+    w->ahead.allow = f->instant < VR_INSTANT_MAX;
+    w->ahead.valid = (double)w->subframes + (double)w->ahead.g.n <= VR_FRAME_STEPS_HARD_MAX;
+}
+
 /* the contact step [at, end]: its island step at `at`, then its events */
 static int contact_step(vrWorld *w, Frame *f, double at, double end, const vrParams *p, char *err, size_t n)
 {
-    int r = f->T > w->t && moving_bodies(w) ? vrIsland_Step(w, at, end - at, err, n) : 0;
+    int r = 0;
+    if (f->T > w->t && moving_bodies(w)) {
+        expect_look_ahead(w, f, at, end, p);
+        r = vrIsland_Step(w, at, end - at, err, n);
+        w->ahead.valid = 0;
+    }
     if (r != 0) return r;
     reach_changed(w, &w->update, p);
     f->ts = f->step_at = at;

@@ -64,6 +64,10 @@ struct vrWorld {
     int *changed;            /* scratch: ids changed by an update */
     int nchanged, changedcap;
     vrTouches touches;       /* scratch: an island step's touching pairs */
+    /* loop.c: the grid and allow_instant a contact step's look-ahead will
+     * have if its island step changes nothing (valid = 1 during that step):
+     * the SGP sends them with the step's request (sgp.c, ahead) */
+    struct { vrGrid g; int allow, valid; } ahead;
     /* island_step.c: the ids of bodies that may be in a contact step (every
      * one that is, and others; found again from every object when
      * structure is no longer contact_structure), and its scratch by

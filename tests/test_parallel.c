@@ -532,10 +532,12 @@ static int test_messages_do_not_grow_with_objects(void)
 
 /* Issue 26: an event costs one round (the worker's answer to its event
  * comes with its look-ahead), an island step every worker says finds
- * nothing costs none; the thesis's rounds (VROC_THESIS_ROUNDS=1: an
- * advance per event, every island step asked) give the same bits, the
- * same counts, and more rounds.  (klu_factors is each worker's first
- * factorisation of each pattern: it follows the workers, not the run.) */
+ * nothing costs none, and one that changes nothing carries the contact
+ * step's first look-ahead (an events round fewer); the thesis's rounds
+ * (VROC_THESIS_ROUNDS=1: an advance per event, every island step asked,
+ * no look-ahead with it) give the same bits, the same counts, and more
+ * rounds.  (klu_factors is each worker's first factorisation of each
+ * pattern: it follows the workers, not the run.) */
 enum { ROUNDS_START, ROUNDS_EVENT, ROUNDS_ADVANCE, ROUNDS_ISLAND };
 
 static int test_fewer_rounds_change_no_bit(void)
@@ -555,11 +557,15 @@ static int test_fewer_rounds_change_no_bit(void)
                fewer.stats.rounds[3], thesis.stats.messages, fewer.stats.messages);
         ENSURE(thesis.stats.rounds[ROUNDS_ADVANCE] >= serial_60.stats.collisions && serial_60.stats.collisions > 0);
         ENSURE(fewer.stats.rounds[ROUNDS_ADVANCE] == 0);
-        ENSURE(fewer.stats.rounds[ROUNDS_EVENT] == thesis.stats.rounds[ROUNDS_EVENT]);
+        ENSURE(fewer.stats.rounds[ROUNDS_EVENT] < thesis.stats.rounds[ROUNDS_EVENT]);
+        ENSURE(fewer.stats.rounds[ROUNDS_EVENT] >= serial_60.stats.collisions);
         ENSURE(fewer.stats.rounds[ROUNDS_ISLAND] < thesis.stats.rounds[ROUNDS_ISLAND]);
         ENSURE(fewer.stats.messages < thesis.stats.messages);
         ENSURE(fewer.stats.klu_solves == serial_60.stats.klu_solves && thesis.stats.klu_solves == serial_60.stats.klu_solves);
-        ENSURE(fewer.stats.checks == thesis.stats.checks && fewer.stats.heap_pops == thesis.stats.heap_pops);
+        /* checks count work, not results: a look-ahead sent with an island
+         * step that then changed bodies is partly made again */
+        printf("    checks %lld, now %lld; heap pops %lld, now %lld\n", thesis.stats.checks, fewer.stats.checks,
+               thesis.stats.heap_pops, fewer.stats.heap_pops);
     }
     return 0;
 }

@@ -76,15 +76,10 @@ static int bad_event(const vroc_earliest_t *m)
                         || !isfinite(m->point[0]) || !isfinite(m->point[1]) || !isfinite(m->point[2]));
 }
 
-static void take_earliest(vrSgp *s, const vroc_earliest_t *m)
+/* worker g's look-ahead in m: 0, or -1 when m is malformed */
+static int note_earliest(vrSgp *s, vrGpInfo *g, const vroc_earliest_t *m)
 {
-    vrGpInfo *g = sender(s, m->run, m->seq, m->gp, WAIT_EARLIEST);
-    if (g && (bad_event(m) || take_answer(s, g, m) != 0)) {
-        s->malformed++;
-        g = NULL;
-    }
-    if (!g) return;
-    g->replied = 1;
+    if (bad_event(m) || take_answer(s, g, m) != 0) return -1;
     g->found = m->found;
     g->t = m->t;
     g->order = m->order;
@@ -101,7 +96,16 @@ static void take_earliest(vrSgp *s, const vroc_earliest_t *m)
     g->copies = m->copies;
     g->records = m->records;
     note_overlaps(s, m);
-    note_error(s, m->gp, m->error);
+    note_error(s, (int)(g - s->gp), m->error);
+    return 0;
+}
+
+static void take_earliest(vrSgp *s, const vroc_earliest_t *m)
+{
+    vrGpInfo *g = sender(s, m->run, m->seq, m->gp, WAIT_EARLIEST);
+    if (!g) return;
+    if (note_earliest(s, g, m) != 0) s->malformed++;
+    else g->replied = 1;
 }
 
 static void take_update(vrSgp *s, const vroc_update_t *m)
@@ -119,12 +123,20 @@ static void take_update(vrSgp *s, const vroc_update_t *m)
     g->now.factors = m->factors;
 }
 
+/* the touches of an island step, and the look-ahead after it when asked
+ * (g->ahead) */
 static void take_candidates(vrSgp *s, const vroc_candidates_t *m)
 {
     vrGpInfo *g = sender(s, m->run, m->seq, m->gp, WAIT_CANDIDATES);
     if (!g) return;
-    if (vrWire_GetTouches(m, s->max_id, &s->touches) != 0) s->malformed++;
-    else g->replied = 1;
+    g->ahead = 0;
+    if (m->nahead > 1 || vrWire_GetTouches(m, s->max_id, &s->touches) != 0
+        || (m->nahead == 1 && note_earliest(s, g, &m->ahead[0]) != 0)) {
+        s->malformed++;
+        return;
+    }
+    g->ahead = m->nahead == 1;
+    g->replied = 1;
     note_error(s, m->gp, m->error);
 }
 

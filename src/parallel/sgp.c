@@ -20,6 +20,7 @@
  *   encode_frame_start   the span's first request; encode_forward the others
  *   put_owed             an island step answered without a round, told with the next request
  *   earliest_of_all      the first event of all, by (time, pair order)
+ *   same_grid            the look-ahead an island step's round carried is the one asked for
  *   taken_answer         the responder's answer from its earliest
  *   sgp_*                the owner set's operations; sgp_end_frame also
  *                        publishes the frame's sounds on VROC_SOUND (SPEC 8)
@@ -61,6 +62,7 @@ static int recover(vrWorld *w, char *err, size_t n)
     w->pending.n = 0;
     s->taken = -1;
     s->owed_h = 0;
+    s->ahead = 0;
     if (vrSgp_AppendStates(&w->pending, &s->snap_pending) != 0) return snprintf(err, n, "out of memory"), -1;
     s->snap_pending.n = 0;
     if (vrSgp_Setup(w, s, err, n) != 0) return -1;
@@ -175,6 +177,13 @@ static int all_quiet(const vrSgp *s)
     return k > 0;
 }
 
+/* the grid a look-ahead was made on is g, to the bit */
+static int same_grid(const vrGrid *g, const vrGrid *h)
+{
+    return g->t0 == h->t0 && g->T == h->T && g->h == h->h && g->n == h->n && g->frame_T == h->frame_T
+           && g->a == h->a && g->k0 == h->k0;
+}
+
 static int sgp_first_event(vrWorld *w, const vrGrid *g, int allow, vrEvent *ev, char *err, size_t n)
 {
     vrSgp *s = w->sgp;
@@ -183,6 +192,13 @@ static int sgp_first_event(vrWorld *w, const vrGrid *g, int allow, vrEvent *ev, 
         s->sound_failed = 0;
         return snprintf(err, n, "cannot publish the sound events on VROC_SOUND at %s", s->url), -1;
     }
+    if (s->ahead && w->pending.n == 0 && allow == s->ahead_allow && same_grid(g, &s->ahead_g)) {
+        s->ahead = 0;            /* the island step's round looked ahead already: no round */
+        s->quiet = all_quiet(s);
+        s->quiet_t = g->T;
+        return earliest_of_all(s, ev);
+    }
+    s->ahead = 0;
     s->seq++;
     s->error[0] = 0;
     if (!s->frame_open || s->frame_fresh) {
@@ -225,6 +241,7 @@ static int sgp_respond(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, s
     int r;
     up->n = 0;
     s->taken = -1;
+    s->ahead = 0;
     if ((r = taken_answer(s, ev, up)) != 0) return r > 0 ? 0 : (snprintf(err, n, "out of memory"), -1);
     m.run = s->run;
     m.seq = ++s->seq;
@@ -244,7 +261,7 @@ static void sgp_end_frame(vrWorld *w, double T)
 {
     vrSgp *s = w->sgp;
     (void)T;
-    s->frame_open = s->frame_fresh = 0;
+    s->frame_open = s->frame_fresh = s->ahead = 0;
     s->snap_pending.n = 0;
     if (strncmp(s->url, "memq://", 7) != 0
         && vrSounds_Publish(s->link.out, w->sounds.ev, w->sounds.n, vrSounds_Name(&w->s)) != 0)
@@ -264,6 +281,7 @@ static int sgp_overlapping(vrWorld *w, double tol, const int *ids, int nids, int
     vrGrid g;
     int i;
     (void)tol;                           /* workers use VR_START_OVERLAP */
+    s->ahead = 0;
     g.t0 = g.T = g.frame_T = g.a = w->t;
     g.h = 0;
     g.n = g.k0 = 0;
@@ -283,6 +301,36 @@ static int sgp_overlapping(vrWorld *w, double tol, const int *ids, int nids, int
         out[i][1] = s->overlap[i][1];
     }
     return s->noverlap;
+}
+
+/* The look-ahead the contact step will start with if its island step
+ * changes nothing (loop.c), asked for with the island step: its first
+ * round is then saved.  A worker does the look-ahead right after the
+ * step's touches, as it would at the next request (whose clock move to
+ * the step's start undoes nothing then); when the step changed bodies or
+ * the grid, the next request goes as before and the looks the changes
+ * did not touch stand (keep_looks) or are made again.  Not in a frame's
+ * first round, which the frame start must follow. */
+static void ask_ahead(const vrWorld *w, vrSgp *s, double h, vroc_contacts_t *m)
+{
+    s->ahead = 0;
+    if (!w->ahead.valid || !(h > 0) || s->frame_fresh) return;
+    m->ahead = 1;
+    vrWire_PutGrid(&m->grid, &w->ahead.g);
+    m->allow_instant = (int8_t)w->ahead.allow;
+    s->ahead_g = w->ahead.g;
+    s->ahead_allow = w->ahead.allow;
+}
+
+/* every worker alive answered the island step with its look-ahead */
+static int all_ahead(const vrSgp *s)
+{
+    int i, k = 0;
+    for (i = 0; i < s->n; i++) {
+        if (s->gp[i].alive && !s->gp[i].ahead) return 0;
+        k += s->gp[i].alive;
+    }
+    return k > 0;
 }
 
 /* An island step: ask every worker for the pairs that touch (a round at
@@ -314,6 +362,7 @@ static int sgp_touching(vrWorld *w, double t, double h, vrTouches *out, char *er
     m.seq = ++s->seq;
     m.t = t;
     m.h = h;
+    ask_ahead(w, s, h, &m);
     m.nstates = ws.n;
     m.states = ws.m;
     put_owed(s, &m.island_t, &m.island_h);
@@ -327,6 +376,7 @@ static int sgp_touching(vrWorld *w, double t, double h, vrTouches *out, char *er
     s->req_channel = VR_CH_CONTACTS;
     if (vrSgp_Exchange(s, WAIT_CANDIDATES, -1)) return recover(w, err, n);
     if (s->error[0]) return snprintf(err, n, "%s", s->error), -1;
+    s->ahead = m.ahead && all_ahead(s);
     for (i = 0; i < s->touches.n; i++) {
         vrTouch *c = vrTouches_Add(out);
         if (!c) return snprintf(err, n, "out of memory"), -1;

@@ -42,6 +42,7 @@ typedef struct vrGpInfo {
     vrGpCounts answer_cost;     /* the KLU counts that answer adds to now's */
     double busy_ms;             /* its time on requests, as it last said */
     int quiet;                  /* its last look-ahead found nothing, nor would an island step */
+    int ahead;                  /* its last island step's answer carried the look-ahead after it */
     vrGpCounts now;             /* of its owner, as it last said */
     vrGpCounts before;          /* of the owners it had before: a setup makes a new one */
     int copies, pairs;          /* its objects; its share of the pairs (the deal's count) */
@@ -62,6 +63,9 @@ struct vrSgp {
     int quiet;                  /* the last round was a look-ahead to quiet_t and every worker was quiet */
     double quiet_t;
     double owed_t, owed_h;      /* an island step answered without a round (owed_h > 0), for the next request */
+    int ahead;                  /* the last island step's round carried the contact step's look-ahead, */
+    vrGrid ahead_g;             /* on this grid with this allow_instant, and changed nothing: */
+    int ahead_allow;            /* the look-ahead's first round is saved (sgp.c) */
     vrBuf req;                  /* the broadcast request awaiting answers */
     const char *req_channel;
     vrUpdate reply;             /* the responder's states */

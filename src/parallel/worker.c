@@ -48,19 +48,26 @@ static void answer_ahead(vrWorker *k)
     }
 }
 
-static void look_ahead(vrWorker *k, int64_t seq, const vroc_grid_t *grid, int allow)
+/* a span's look-ahead on grid: k->first (has_first), quiet, the answer
+ * to its event; vrOwner_FirstEvent's 1, 0 or -1, or -2 for a bad grid */
+static int find_first(vrWorker *k, const vroc_grid_t *grid, int allow)
 {
     vrGrid g;
     int r;
-    if (vrWire_GetGrid(grid, &g) != 0) {
-        vrWorker_SendEarliest(k, seq, 0, NULL, 0, NULL, NULL, "bad grid");
-        return;
-    }
+    if (vrWire_GetGrid(grid, &g) != 0) return -2;
     r = vrOwner_FirstEvent(k->owner, &g, allow, &k->first);
     k->has_first = r == 1;
     k->quiet = r == 0 && !k->thesis_rounds && vrOwner_Quiet(k->owner);
     if (k->has_first && !k->thesis_rounds) answer_ahead(k);
-    vrWorker_SendEarliest(k, seq, r == 1, &k->first, 0, NULL, NULL, r < 0 ? "out of memory" : NULL);
+    return r;
+}
+
+static const char *first_failed(int r) { return r == -2 ? "bad grid" : r < 0 ? "out of memory" : NULL; }
+
+static void look_ahead(vrWorker *k, int64_t seq, const vroc_grid_t *grid, int allow)
+{
+    int r = find_first(k, grid, allow);
+    vrWorker_SendEarliest(k, seq, r == 1, &k->first, 0, NULL, NULL, first_failed(r));
 }
 
 /* a new request: the answer sent with the last earliest was not taken
@@ -234,12 +241,16 @@ static void take_forward(vrWorker *k, const vroc_update_t *m)
     else look_ahead(k, m->seq, &m->grid, m->allow_instant);
 }
 
-/* an island step: the pairs that touch */
+/* an island step: the pairs that touch, and with ahead the contact
+ * step's look-ahead after it (the thesis's rounds have none) */
 static void report_touches(vrWorker *k, const vroc_contacts_t *m)
 {
     vrTouches list = {0, 0, NULL};
     vroc_candidates_t r;
+    vroc_earliest_t ahead;
+    vrWireStates ws;
     memset(&r, 0, sizeof r);
+    memset(&ws, 0, sizeof ws);
     r.run = k->run;
     r.seq = m->seq;
     r.gp = k->gp;
@@ -251,9 +262,17 @@ static void report_touches(vrWorker *k, const vroc_contacts_t *m)
         r.seq = m->seq;
         r.gp = k->gp;
         r.error = "out of memory";
+    } else if (m->ahead && !k->thesis_rounds) {
+        int f = find_first(k, &m->grid, m->allow_instant);
+        vrWorker_PutEarliest(k, m->seq, f == 1, &k->first, 0, NULL, NULL, first_failed(f), &ahead, &ws);
+        r.nahead = 1;
+        r.ahead = &ahead;
     }
     if (VR_ENCODE(&k->reply, vroc_candidates_t, &r) == 0) vrWorker_Answer(k, VR_CH_CANDIDATES, m->seq);
+    r.nahead = 0;
+    r.ahead = NULL;
     vrWire_FreeTouches(&r);
+    vrWire_FreeStates(&ws);
     vrTouches_Free(&list);
     vrWorker_NoteBusy(k);
 }

@@ -80,43 +80,49 @@ static int put_answer(const vrWorker *k, vroc_earliest_t *m, vrWireStates *ws)
     return 0;
 }
 
+void vrWorker_PutEarliest(vrWorker *k, int64_t seq, int found, const vrEvent *ev, int noverlap, int32_t *a,
+                          int32_t *b, const char *error, vroc_earliest_t *m, vrWireStates *ws)
+{
+    vrOwnerStats os;
+    vrResponseStats rs = vrWorker_Counts(k);
+    memset(m, 0, sizeof *m);
+    memset(&os, 0, sizeof os);
+    memset(ws, 0, sizeof *ws);
+    if (k->owner) vrOwner_Stats(k->owner, &os);
+    m->run = k->run;
+    m->seq = seq;
+    m->gp = k->gp;
+    m->found = (int8_t)found;
+    if (found) {
+        m->t = ev->t;
+        m->order = ev->order;
+        m->kind = (int8_t)ev->kind;
+        m->approach = ev->approach;
+        m->point[0] = ev->c.x, m->point[1] = ev->c.y, m->point[2] = ev->c.z;
+        put_answer(k, m, ws);
+    }
+    m->solves = rs.solves;
+    m->refactors = rs.refactors;
+    m->factors = rs.factors;
+    vrWorker_NoteBusy(k);
+    m->busy_ms = k->busy_ms;
+    m->quiet = (int8_t)k->quiet;
+    m->checks = os.checks;
+    m->heap_pops = os.heap_pops;
+    m->copies = k->owner ? vrOwner_BodyCount(k->owner) : 0;
+    m->records = k->owner ? vrOwner_PairCount(k->owner) : 0;
+    m->noverlap = noverlap;
+    m->a = a;
+    m->b = b;
+    m->error = (char *)(error ? error : "");
+}
+
 void vrWorker_SendEarliest(vrWorker *k, int64_t seq, int found, const vrEvent *ev,
                            int noverlap, int32_t *a, int32_t *b, const char *error)
 {
     vroc_earliest_t m;
-    vrOwnerStats os;
-    vrResponseStats rs = vrWorker_Counts(k);
     vrWireStates ws;
-    memset(&m, 0, sizeof m);
-    memset(&os, 0, sizeof os);
-    memset(&ws, 0, sizeof ws);
-    if (k->owner) vrOwner_Stats(k->owner, &os);
-    m.run = k->run;
-    m.seq = seq;
-    m.gp = k->gp;
-    m.found = (int8_t)found;
-    if (found) {
-        m.t = ev->t;
-        m.order = ev->order;
-        m.kind = (int8_t)ev->kind;
-        m.approach = ev->approach;
-        m.point[0] = ev->c.x, m.point[1] = ev->c.y, m.point[2] = ev->c.z;
-        put_answer(k, &m, &ws);
-    }
-    m.solves = rs.solves;
-    m.refactors = rs.refactors;
-    m.factors = rs.factors;
-    vrWorker_NoteBusy(k);
-    m.busy_ms = k->busy_ms;
-    m.quiet = (int8_t)k->quiet;
-    m.checks = os.checks;
-    m.heap_pops = os.heap_pops;
-    m.copies = k->owner ? vrOwner_BodyCount(k->owner) : 0;
-    m.records = k->owner ? vrOwner_PairCount(k->owner) : 0;
-    m.noverlap = noverlap;
-    m.a = a;
-    m.b = b;
-    m.error = (char *)(error ? error : "");
+    vrWorker_PutEarliest(k, seq, found, ev, noverlap, a, b, error, &m, &ws);
     if (VR_ENCODE(&k->reply, vroc_earliest_t, &m) == 0) vrWorker_Answer(k, VR_CH_EARLIEST, seq);
     vrWire_FreeStates(&ws);
 }

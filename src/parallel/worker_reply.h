@@ -4,6 +4,8 @@
 #define VROC_WORKER_REPLY_H
 
 #include "worker_state.h"
+#include "wire.h"
+#include "vroc_earliest_t.h"
 
 /* k->reply (encoded) published on channel as the answer to seq */
 void vrWorker_Answer(vrWorker *k, const char *channel, int64_t seq);
@@ -21,6 +23,10 @@ void vrWorker_NoteBusy(vrWorker *k);
  * k->answered), the overlaps of a check, an error (NULL: none) */
 void vrWorker_SendEarliest(vrWorker *k, int64_t seq, int found, const vrEvent *ev, int noverlap, int32_t *a,
                            int32_t *b, const char *error);
+/* the same message made in *m (its answer's states in *ws, to be freed
+ * with vrWire_FreeStates once m is encoded), not sent */
+void vrWorker_PutEarliest(vrWorker *k, int64_t seq, int found, const vrEvent *ev, int noverlap, int32_t *a,
+                          int32_t *b, const char *error, vroc_earliest_t *m, vrWireStates *ws);
 /* a heartbeat (the owner's progress callback; ctx is the worker) at most
  * every HELLO_MS, while a long look-ahead keeps it from answering */
 void vrWorker_Beat(void *ctx);
