@@ -18,6 +18,7 @@
 #include <math.h>
 #include <string.h>
 #include "rest.h"
+#include "contact_set.h"
 
 #define REST_DISPLACEMENT 1e-4   /* m per frame */
 #define REST_ROTATION 1e-3       /* rad per frame */
@@ -131,21 +132,25 @@ static int rests(const vrWorld *w, const vrObject *o)
 int vrRest_FrameEnd(vrWorld *w, vrUpdate *up)
 {
     unsigned char *fails;
-    int i;
+    int k;
     /* SPEC 8: while the hand holds a body nothing starts to rest: a body
      * lying on the held one, frozen, would hang in the air when the hand
      * moves it away (a kinematic body wakes what it meets, not what it
      * leaves) */
     if (w->grab.held >= 0) return 0;
-    if (!(fails = calloc((size_t)w->table.n + 1, 1))) return -1;
-    for (i = 0; i < w->table.n; i++) {
-        vrObject *o = w->table.obj[i];
+    /* a body in an island is in contact: the contact set, in id order,
+     * holds them all (a pass over the table was 14 % of a frame of 10,000
+     * flying objects) */
+    if (vrContactSet_Prune(w) != 0 || !(fails = calloc((size_t)w->table.n + 1, 1))) return -1;
+    for (k = 0; k < w->ncontact_ids; k++) {
+        vrObject *o = w->table.obj[w->contact_ids[k]];
         if (!o || !o->live || o->body.is_static || o->body.resting) continue;
         if (o->body.island < 0) continue;
         qualifies(w, up, o);
         if (!rests(w, o)) fails[o->body.island] = 1;
     }
-    for (i = 0; i < w->table.n; i++) {
+    for (k = 0; k < w->ncontact_ids; k++) {
+        int i = w->contact_ids[k];
         vrObject *o = w->table.obj[i];
         vrBodyState *st;
         if (!o || !o->live || o->body.is_static || o->body.resting || o->body.island < 0) continue;

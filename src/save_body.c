@@ -6,6 +6,7 @@
  *   pending  a state the owners had not heard of yet
  *   put_state, get_state   the fields of a vrBodyState, both ways
  */
+#include <stdio.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -68,13 +69,17 @@ static void put_state(FILE *out, const vrBodyState *st)
     vrSave_Integer(out, "island", st->island);
 }
 
-/* island: the island's lowest body id, -1 for none */
+/* island: the island's lowest body id, -1 for none; a body in an island
+ * is in contact (the frame end's rest test visits the bodies in contact) */
 static int get_state(vrSaveLine *l, int max_island, vrBodyState *st, char *err, size_t n)
 {
-    return get_vec(l, "x", &st->x, err, n) || get_vec(l, "v", &st->v, err, n) || vrSave_GetQuat(l, "q", &st->q, err, n)
+    if (get_vec(l, "x", &st->x, err, n) || get_vec(l, "v", &st->v, err, n) || vrSave_GetQuat(l, "q", &st->q, err, n)
         || get_vec(l, "L", &st->L, err, n) || get_int(l, "rest", 0, 1, &st->resting, err, n)
         || get_int(l, "hit", 0, 1, &st->hit, err, n) || get_int(l, "contact", 0, 1, &st->contact, err, n)
-        || get_int(l, "island", -1, max_island, &st->island, err, n) ? -1 : 0;
+        || get_int(l, "island", -1, max_island, &st->island, err, n))
+        return -1;
+    if (st->island >= 0 && !st->contact) return snprintf(err, n, "island %d without contact 1", st->island), -1;
+    return 0;
 }
 
 /* ---- body ------------------------------------------------------------------------- */
