@@ -45,6 +45,7 @@ static int apply_live_edit(vrWorld *w, vrObject *o, const vrObjectDef *old, char
     }
     if (!o->built) w->structure++;
     o->overlap_owed = 1;
+    w->table.unready = 1;
     vrBody_Pose(&o->body, w->t, &pose);
     omega = vrBody_Omega(&o->body, &pose);
     w->update.n = 0;
@@ -76,7 +77,7 @@ int vrWorld_SetObjectDef(vrWorld *w, vrObjectId id, const vrObjectDef *def, char
     vrObjectDef old;
     if (!o) return vrGeom_Fail(err, n, "no such object");
     if (vrObject_SetDef(o, def, &old, err, n) != 0) return -1;
-    if (vrObjectDef_ShapeChanged(&old, def) || vrObjectDef_MassChanged(&old, def)) o->built = 0;
+    if (vrObjectDef_ShapeChanged(&old, def) || vrObjectDef_MassChanged(&old, def)) o->built = 0, w->table.unready = 1;
     if (!o->live) return 0;
     return apply_live_edit(w, o, &old, err, n);
 }

@@ -151,6 +151,7 @@ int vrSave_ReadBody(vrWorld *w, int id, vrSaveLine *l, char *err, size_t n)
         return -1;
     }
     *o->saved = s;
+    w->table.unready = 1;
     return 0;
 }
 

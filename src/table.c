@@ -113,6 +113,7 @@ int vrTable_Add(vrTable *t, const char *name, vrObjectType type, int *id, char *
     o->def = vrObjectDef_Default(type);
     o->alive = 1;
     o->body.id = t->n;
+    t->unready = 1;
     t->obj[t->n] = o;
     if (id) *id = t->n;
     t->n++;
@@ -148,6 +149,7 @@ int vrTable_Put(vrTable *t, int id, const vrObjectDef *def, const char *off_text
     o->def = *def;
     o->alive = 1;
     o->body.id = id;
+    t->unready = 1;
     if (def->type == VR_POLYHEDRON && (!off_text || off_from_text(off_text, &o->off, err, n) != 0))
         return off_text ? -1 : vrGeom_Fail(err, n, "polyhedron without its OFF text");
     return 0;

@@ -40,6 +40,9 @@ typedef struct vrTable {
     int *index;              /* ids by name hash, open addressing (-1: empty); a deleted
                                 object's id lingers until the index is made again */
     int indexcap, nindex;
+    int unready;             /* an object may be unbuilt, not live yet, owed an overlap check or
+                                holding a saved state: vrWorld_Start's passes over the table
+                                have work (start.c; set wherever that begins) */
 } vrTable;
 
 vrObject *vrTable_Get(const vrTable *t, int id);
