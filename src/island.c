@@ -4,11 +4,11 @@
  *   sweep, residual        every contact once, in order; what they leave
  *   levels, shock_pass     the ground-up pass with lower bodies held still
  *   stalled                a try's sweeps judged not to reach tol by the cap
- *   free_solve, solve      a try's state; a try
+ *   reserve_*, solve       a try's state (the caller's scratch, island.h); a try
  *   kinetic, step_energy   the energy checks' measures
  *   step_gain, pay_back    what a step's solve gains; impulses scaled back until it gains nothing
  *   solve_tries            the tries the energy check asks for, and a step's sweeping on
- *   vrIsland_Solve, vrIsland_SolveStep
+ *   solve_with, vrIsland_Solve, vrIsland_SolveStep, vrIslandScratch_Free
  */
 #include <stdlib.h>
 #include <string.h>
@@ -153,17 +153,54 @@ static int valid(const vrIslandBody *body, int nbody, const vrIslandContact *c, 
     return 1;
 }
 
-static void free_solve(vrIslandSolve *s)
+void vrIslandScratch_Free(vrIslandScratch *x)
 {
-    free(s->pt);
-    free(s->patch);
-    free(s->m);
-    free(s->pass);
-    free(s->lcp);
+    free(x->pt);
+    free(x->patch);
+    free(x->m);
+    free(x->pass);
+    free(x->lcp);
+    free(x->before);
+    free(x->inertia);
+    memset(x, 0, sizeof *x);
+}
+
+/* room for n contacts' solve arrays */
+static int reserve_contacts(vrIslandScratch *x, int n)
+{
+    void *p;
+    if (n <= x->cap) return 0;
+    n = n > 2 * x->cap ? n : 2 * x->cap;
+    if (!(p = realloc(x->pt, (size_t)n * VR_ISLAND_POINTS * sizeof *x->pt))) return -1;
+    x->pt = p;
+    if (!(p = realloc(x->patch, (size_t)n * sizeof *x->patch))) return -1;
+    x->patch = p;
+    if (!(p = realloc(x->m, (size_t)n * VR_LCP_MAX * VR_LCP_MAX * sizeof *x->m))) return -1;
+    x->m = p;
+    if (!(p = realloc(x->pass, (size_t)n * sizeof *x->pass))) return -1;
+    x->pass = p;
+    if (!(p = realloc(x->lcp, (size_t)n * sizeof *x->lcp))) return -1;
+    x->lcp = p;
+    x->cap = n;
+    return 0;
+}
+
+/* room for n bodies' copies and inertias */
+static int reserve_bodies(vrIslandScratch *x, int n)
+{
+    void *p;
+    if (n <= x->bodycap) return 0;
+    n = n > 2 * x->bodycap ? n : 2 * x->bodycap;
+    if (!(p = realloc(x->before, (size_t)n * sizeof *x->before))) return -1;
+    x->before = p;
+    if (!(p = realloc(x->inertia, (size_t)n * sizeof *x->inertia))) return -1;
+    x->inertia = p;
+    x->bodycap = n;
+    return 0;
 }
 
 static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
-                 int frictionless, int stall, vrIslandStats *st)
+                 int frictionless, int stall, vrIslandStats *st, vrIslandScratch *x)
 {
     vrIslandSolve s;
     double change[STALL_SPAN] = {0};
@@ -172,15 +209,8 @@ static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact
     st->residual = 0;
     if (!valid(body, nbody, c, ncontact)) return -1;
     if (ncontact == 0) return 0;
-    s.pt = malloc((size_t)ncontact * VR_ISLAND_POINTS * sizeof *s.pt);
-    s.patch = malloc((size_t)ncontact * sizeof *s.patch);
-    s.m = malloc((size_t)ncontact * VR_LCP_MAX * VR_LCP_MAX * sizeof *s.m);
-    s.pass = malloc((size_t)ncontact * sizeof *s.pass);
-    s.lcp = malloc((size_t)ncontact * sizeof *s.lcp);
-    if (!s.pt || !s.patch || !s.m || !s.pass || !s.lcp) {
-        free_solve(&s);
-        return -1;
-    }
+    if (reserve_contacts(x, ncontact) != 0) return -1;
+    s.pt = x->pt, s.patch = x->patch, s.m = x->m, s.pass = x->pass, s.lcp = x->lcp;
     s.body = body, s.c = c, s.ncontact = ncontact, s.frictionless = frictionless;
     for (ci = 0; ci < ncontact; ci++) {
         if (!c[ci].warm || frictionless) {
@@ -204,7 +234,6 @@ static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact
         }
     }
     st->residual = residual(&s);
-    free_solve(&s);
     return 0;
 }
 
@@ -288,7 +317,7 @@ static void no_bounces(vrIslandContact *c, int ncontact)
 #define MORE_SWEEPS 64   /* a step's solve that gains over the step sweeps on so far */
 
 static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
-                       int stall, vrIslandStats *st)
+                       int stall, vrIslandStats *st, vrIslandScratch *x)
 {
     vrIslandBody *before;
     mat33 *inertia;
@@ -296,14 +325,9 @@ static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int nc
     int i, r, try;
     vrIslandStats dummy;
     if (!st) st = &dummy;
-    if (nbody <= 0 || ncontact <= 0) return solve(body, nbody, c, ncontact, sweeps, tol, 0, stall, st);
-    before = malloc((size_t)nbody * sizeof *before);
-    inertia = malloc((size_t)nbody * sizeof *inertia);
-    if (!before || !inertia) {
-        free(before);
-        free(inertia);
-        return -1;
-    }
+    if (nbody <= 0 || ncontact <= 0) return solve(body, nbody, c, ncontact, sweeps, tol, 0, stall, st, x);
+    if (reserve_bodies(x, nbody) != 0) return -1;
+    before = x->before, inertia = x->inertia;
     memcpy(before, body, (size_t)nbody * sizeof *before);
     for (i = 0; i < nbody; i++) inertia[i] = body[i].dynamic ? mat33_inverse(&body[i].inv_inertia) : mat33_zero();
     e0 = kinetic(body, inertia, nbody);
@@ -314,7 +338,7 @@ static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int nc
      * too, which never gains (each step then lowers the energy or keeps it). */
     for (try = 0; try < 3; try++) {
         if (try == 2) no_bounces(c, ncontact);
-        r = solve(body, nbody, c, ncontact, sweeps, tol, try > 0, stall, st);
+        r = solve(body, nbody, c, ncontact, sweeps, tol, try > 0, stall, st, x);
         st->frictionless = try > 0, st->bounceless = try > 1;
         if (r != 0 || try == 2 || kinetic(body, inertia, nbody) <= e0 * (1 + 1e-12) + 1e-300) break;
         memcpy(body, before, (size_t)nbody * sizeof *before);
@@ -334,24 +358,34 @@ static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int nc
         int frictionless = st->frictionless, bounceless = st->bounceless;
         for (i = 0; i < ncontact; i++) c[i].warm = 1;
         memcpy(body, before, (size_t)nbody * sizeof *before);
-        r = solve(body, nbody, c, ncontact, MORE_SWEEPS, tol, frictionless, stall, st);
+        r = solve(body, nbody, c, ncontact, MORE_SWEEPS, tol, frictionless, stall, st, x);
         st->frictionless = frictionless, st->bounceless = bounceless;
         if (r == 0) R = step_gain(body, before, inertia, nbody, &C);
     }
     if (r == 0) pay_back(body, before, nbody, c, ncontact, R, C);
-    free(before);
-    free(inertia);
+    return r;
+}
+
+static int solve_with(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
+                      int stall, vrIslandStats *st, vrIslandScratch *x)
+{
+    vrIslandScratch own;
+    int r;
+    if (x) return solve_tries(body, nbody, c, ncontact, sweeps, tol, stall, st, x);
+    memset(&own, 0, sizeof own);
+    r = solve_tries(body, nbody, c, ncontact, sweeps, tol, stall, st, &own);
+    vrIslandScratch_Free(&own);
     return r;
 }
 
 int vrIsland_Solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
                    vrIslandStats *st)
 {
-    return solve_tries(body, nbody, c, ncontact, sweeps, tol, 0, st);
+    return solve_with(body, nbody, c, ncontact, sweeps, tol, 0, st, NULL);
 }
 
 int vrIsland_SolveStep(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
-                       vrIslandStats *st)
+                       vrIslandStats *st, vrIslandScratch *x)
 {
-    return solve_tries(body, nbody, c, ncontact, sweeps, tol, 1, st);
+    return solve_with(body, nbody, c, ncontact, sweeps, tol, 1, st, x);
 }

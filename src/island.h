@@ -72,6 +72,24 @@ typedef struct vrIslandStats {
     double residual;          /* largest normal velocity below a floor left, m/s */
 } vrIslandStats;
 
+/* What a solve works in, kept from one solve to the next by its caller
+ * (vrIsland_SolveStep's x; NULL: a solve's own, freed after it): its arrays grow to the
+ * largest island seen.  Made afresh at every solve, a pile's islands
+ * mapped and unmapped them, and the page faults were a tenth of its time.
+ * Zeroed, it is empty. */
+typedef struct vrIslandScratch {
+    struct vrSolvePoint *pt;
+    struct vrSolvePatch *patch;
+    struct vrLcpFactor *lcp;
+    double *m;
+    int *pass;
+    int cap;                  /* contacts they hold */
+    vrIslandBody *before;
+    mat33 *inertia;
+    int bodycap;              /* bodies they hold */
+} vrIslandScratch;
+void vrIslandScratch_Free(vrIslandScratch *x);
+
 /* Solves the island in place (body velocities updated, impulses in the
  * contacts).  At most `sweeps` sweeps, fewer once no impulse changes by
  * more than `tol` m/s of relative velocity.  0, or -1 on a bad argument. */
@@ -84,6 +102,6 @@ int vrIsland_Solve(vrIslandBody *body, int nbody, vrIslandContact *c, int nconta
  * next step goes on from its impulses; a generous cap's last sweeps, which
  * still carry a tall stack's weight down (vrIsland_Solve), may be cut. */
 int vrIsland_SolveStep(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
-                       vrIslandStats *st);
+                       vrIslandStats *st, vrIslandScratch *x);
 
 #endif

@@ -185,7 +185,7 @@ static int solve_one(vrWorld *w, Island *is, const int *parent, int r, double t,
         if (!instant && w->warm.structure == w->structure) vrWarm_Start(&w->warm, c->a, c->b, h, gc, &is->c[nc]);
         nc++;
     }
-    if (vrIsland_SolveStep(is->body, is->n, is->c, is->nc, SWEEPS, SWEEP_TOL, NULL) != 0) return -1;
+    if (vrIsland_SolveStep(is->body, is->n, is->c, is->nc, SWEEPS, SWEEP_TOL, NULL, &w->solve_scratch) != 0) return -1;
     if (instant) w->collisions += is->nc;      /* contacts answered (SPEC 7) */
     else w->island_steps++, w->island_contacts += is->nc;
     for (k = 0; k < is->nc && !instant; k++)

@@ -52,6 +52,7 @@ void vrWorld_Destroy(vrWorld *w)
     vrUpdate_Free(&w->pending);
     vrTouches_Free(&w->touches);
     free(w->contact_ids);
+    vrIslandScratch_Free(&w->solve_scratch);
     free(w->isl_parent);
     free(w->isl_in);
     free(w->isl_slot);

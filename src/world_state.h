@@ -30,6 +30,7 @@
 #include "table.h"
 #include "sound.h"
 #include "track.h"
+#include "island.h"
 #include "warm.h"
 #include "grab.h"
 
@@ -75,6 +76,7 @@ struct vrWorld {
     int *contact_ids;
     int ncontact_ids, contact_idcap;
     long contact_structure;
+    vrIslandScratch solve_scratch;   /* the island solver's arrays (island.h) */
     int *isl_parent, *isl_in, *isl_slot, *isl_ids;
     int isl_cap;
     vrWarm warm, warm_next;  /* the last island step's impulses (warm.h); the step's being kept */

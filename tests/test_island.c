@@ -351,7 +351,7 @@ static int test_a_stalled_solve_goes_to_the_ground_up_pass_early(void)
     int i;
     cold_stack(N, b, c);
     memcpy(full, b, sizeof b), memcpy(cf, c, sizeof c);
-    ENSURE(vrIsland_SolveStep(b, N + 1, c, N, CAP, 1e-8, &st) == 0);
+    ENSURE(vrIsland_SolveStep(b, N + 1, c, N, CAP, 1e-8, &st, NULL) == 0);
     ENSURE(vrIsland_Solve(full, N + 1, cf, N, CAP, 1e-8, &stf) == 0);
     printf("    stack of 10: %d sweeps (full solve %d), shock pass %d, residual %.3g m/s, step's energy %.3g J\n",
            st.sweeps, stf.sweeps, st.shock, st.residual, step_energy(b, N + 1));
@@ -363,7 +363,7 @@ static int test_a_stalled_solve_goes_to_the_ground_up_pass_early(void)
     box[1].v = vec3_make(0.05, 0.02, -G * H), box[1].w = vec3_make(0.3, 0, 0);
     memcpy(box_step, box, sizeof box), cb_step = cb;
     ENSURE(vrIsland_Solve(box, 2, &cb, 1, CAP, 1e-8, &stb) == 0);
-    ENSURE(vrIsland_SolveStep(box_step, 2, &cb_step, 1, CAP, 1e-8, &stb_step) == 0);
+    ENSURE(vrIsland_SolveStep(box_step, 2, &cb_step, 1, CAP, 1e-8, &stb_step, NULL) == 0);
     printf("    box landing: %d sweeps, %d in the step's solve\n", stb.sweeps, stb_step.sweeps);
     ENSURE(stb.sweeps > 9 && stb.sweeps < CAP && stb_step.sweeps == stb.sweeps);
     ENSURE(memcmp(box, box_step, sizeof box) == 0 && memcmp(&cb, &cb_step, sizeof cb) == 0);
