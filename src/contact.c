@@ -96,29 +96,34 @@ static vec3 face_axis(const vrGap *g, int side, int f)
  * win and is not measured: the same answer as measuring every face, from
  * a few support climbs instead of two for every face of both shapes (a
  * superquadric's hundreds, at every halving of a touch's bisection). */
+/* the bounds of this many faces (both shapes') are kept from the first
+ * pass for the second, not made again: most shapes have fewer */
+#define KEPT_BOUNDS 512
+
 static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
 {
     vrFaceBound fb[2];
     vec3 best = vec3_zero();
-    double floor_gap, top = -HUGE_VAL;
-    int side, f, top_side = 0, top_f = 0;
+    double floor_gap, top = -HUGE_VAL, kept[KEPT_BOUNDS];
+    int side, f, k, top_side = 0, top_f = 0, keep = g->a->p->nf + g->b->p->nf <= KEPT_BOUNDS;
     fb[0] = face_bound(g->a, cb, vrPosed_Vertex(g->b, g->vb));
     fb[1] = face_bound(g->b, ca, vrPosed_Vertex(g->a, g->va));
-    for (side = 0; side < 2; side++) {
+    for (side = 0, k = 0; side < 2; side++) {
         const vrPolyhedron *p = side ? g->b->p : g->a->p;
-        for (f = 0; f < p->nf; f++) {
+        for (f = 0; f < p->nf; f++, k++) {
             double ub = gap_bound(&fb[side], p, f);
+            if (keep) kept[k] = ub;
             if (ub > top) top = ub, top_side = side, top_f = f;
         }
     }
     floor_gap = vrGap_Along(g, face_axis(g, top_side, top_f)) - BOUND_SLACK;
     *gap = -HUGE_VAL;
-    for (side = 0; side < 2; side++) {
+    for (side = 0, k = 0; side < 2; side++) {
         const vrPolyhedron *p = side ? g->b->p : g->a->p;
-        for (f = 0; f < p->nf; f++) {
+        for (f = 0; f < p->nf; f++, k++) {
             vec3 u;
             double h;
-            if (gap_bound(&fb[side], p, f) < floor_gap) continue;
+            if ((keep ? kept[k] : gap_bound(&fb[side], p, f)) < floor_gap) continue;
             u = face_axis(g, side, f);
             if ((h = vrGap_Along(g, u)) > *gap) *gap = h, best = u;
         }
