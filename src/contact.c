@@ -104,7 +104,7 @@ static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
 {
     vrFaceBound fb[2];
     vec3 best = vec3_zero();
-    double floor_gap, top = -HUGE_VAL, kept[KEPT_BOUNDS];
+    double floor_gap, top_gap, top = -HUGE_VAL, kept[KEPT_BOUNDS];
     int side, f, k, top_side = 0, top_f = 0, keep = g->a->p->nf + g->b->p->nf <= KEPT_BOUNDS;
     fb[0] = face_bound(g->a, cb, vrPosed_Vertex(g->b, g->vb));
     fb[1] = face_bound(g->b, ca, vrPosed_Vertex(g->a, g->va));
@@ -116,7 +116,8 @@ static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
             if (ub > top) top = ub, top_side = side, top_f = f;
         }
     }
-    floor_gap = vrGap_Along(g, face_axis(g, top_side, top_f)) - BOUND_SLACK;
+    top_gap = vrGap_Along(g, face_axis(g, top_side, top_f));
+    floor_gap = top_gap - BOUND_SLACK;
     *gap = -HUGE_VAL;
     for (side = 0, k = 0; side < 2; side++) {
         const vrPolyhedron *p = side ? g->b->p : g->a->p;
@@ -125,7 +126,8 @@ static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
             double h;
             if ((keep ? kept[k] : gap_bound(&fb[side], p, f)) < floor_gap) continue;
             u = face_axis(g, side, f);
-            if ((h = vrGap_Along(g, u)) > *gap) *gap = h, best = u;
+            h = side == top_side && f == top_f ? top_gap : vrGap_Along(g, u);   /* measured once */
+            if (h > *gap) *gap = h, best = u;
         }
     }
     return best;
