@@ -61,7 +61,10 @@ static void set_result(vrContact *out, double dist, vec3 n, vec3 pa, vec3 pb)
  * (a's highest along its normal) and on b's side the better of the walk's
  * point (a point of both shapes in an overlap, the closest point of a
  * touch) and the walk's vertex; for a face of b the same, sides swapped.
- * Measured in the face's own body frame: one dot product a face. */
+ * Measured in the face's own body frame against its plane (no higher
+ * than a's highest point along it): a dot product a point.  A bound's
+ * rounding does not change the answer: the winning face's bound is above
+ * its gap, so above the floor, however it rounds (touching_axis). */
 typedef struct { vec3 other[2]; } vrFaceBound;
 
 static vrFaceBound face_bound(const vrPosed *x, vec3 walk_point, vec3 walk_vertex)
@@ -74,8 +77,8 @@ static vrFaceBound face_bound(const vrPosed *x, vec3 walk_point, vec3 walk_verte
 
 static double gap_bound(const vrFaceBound *fb, const vrPolyhedron *p, int f)
 {
-    vec3 n = p->face_normal[f], v = p->vert[p->face_vert[p->face_start[f]]];
-    return vr_min(vec3_dot(n, vec3_sub(fb->other[0], v)), vec3_dot(n, vec3_sub(fb->other[1], v)));
+    vec3 n = p->face_normal[f];
+    return vr_min(vec3_dot(n, fb->other[0]), vec3_dot(n, fb->other[1])) - p->face_offset[f];
 }
 
 /* what the walk's points and the bounds' own rounding may be off by (m):
