@@ -4,6 +4,7 @@
  * tolerances.
  *   p2_sort, p2_apart, p2_dedup  sorting, and points closer than VR_REGION_DEDUP
  *   side                         signed distance from a line
+ *   thin_to_segment              a hull too thin to clip with, as its segment
  *   clip_halfplane               Sutherland-Hodgman against one edge
  *   intersect_segments           two segments (or points)
  */
@@ -130,11 +131,36 @@ static int intersect_segments(const P2 *p, const P2 *q, P2 *out)
     return p2_dedup(out, 2);
 }
 
+/* A hull no wider than VR_REGION_SLACK about the line through its two
+ * farthest points is that segment.  As a polygon its edges lie along the
+ * line, and their half-planes, each taken within VR_REGION_SLACK, let the
+ * whole line through: a superquadric's edge on a wall made a region as
+ * long as the wall, whose far points' bounce floors were 80 m/s. */
+static int thin_to_segment(P2 *p, int n)
+{
+    int i, a = 0, b = 0;
+    double far = -1;
+    P2 x, y;
+    if (n < 3) return n;
+    for (i = 1; i < n; i++)
+        if (p2_len(p2_sub(p[i], p[0])) > far) far = p2_len(p2_sub(p[i], p[0])), b = i;
+    for (i = 0, far = -1; i < n; i++)
+        if (p2_len(p2_sub(p[i], p[b])) > far) far = p2_len(p2_sub(p[i], p[b])), a = i;
+    if (!(far > VR_REGION_DEDUP)) return n;
+    for (i = 0; i < n; i++)
+        if (fabs(side(p[a], p[b], p[i])) > VR_REGION_SLACK) return n;
+    x = p[a], y = p[b];
+    p[0] = x, p[1] = y;
+    return 2;
+}
+
 /* clip the other by the polygon's edges */
 int vrP2_IntersectHulls(P2 *p, int np, P2 *q, int nq, P2 *out, P2 *buf)
 {
     int k, n;
     P2 *cur = out, *next = buf, *swap;
+    np = thin_to_segment(p, np);
+    nq = thin_to_segment(q, nq);
     if (np < 3 && nq < 3) {
         P2 ps[2], qs[2];
         ps[0] = p[0], ps[1] = p[np - 1], qs[0] = q[0], qs[1] = q[nq - 1];

@@ -240,6 +240,44 @@ static int test_offcentre_superquadric_hit_conserves_momenta(void)
     return superquadric_case(1.0) || superquadric_case(0.4);
 }
 
+/* A superquadric's long edge on a wall (physics fuzzer seed 532): its
+ * contact points' hull was a sliver, and clipped by the sliver's edges the
+ * wall's face gave a region as long as the wall; the bounce floors at its
+ * far ends were 80 m/s, the island solve gained 94 times the energy, fell
+ * back to no bounce, and the body stopped dead at the wall.  With e = 1 it
+ * bounces as a whole, its normal velocity reversed, energy kept. */
+static int test_a_superquadric_edge_bounces_off_a_wall_whole(void)
+{
+    vrWorld *w = vrScene_World(0.05, 0.005, 0);
+    vrObjectDef d = vrObjectDef_Default(VR_SUPERQUADRIC);
+    const double tilt[4] = {1, 0, 0, 5.95479221487949e-11}, spin[3] = {4.2e-8, 0, 0};
+    const double v[3] = {-2.09215, 1.13895, -1.46799};
+    vrObjectState st;
+    vrStats before, after;
+    vrObjectId id;
+    int k;
+    vrScene_Box(w, "wall", vec3_make(0.1, 1.6, 1.6), vec3_make(-1.6, 0, 1.5), -1, 1);
+    d.a1 = 0.0418552, d.a2 = 0.038095, d.a3 = 0.0965177, d.exp1 = 0.412424, d.exp2 = 1.6611;
+    d.translate[0] = -1.3871399, d.translate[1] = 0.07706902699594553, d.translate[2] = 1.0321221;
+    d.mass = 0.5, d.mass_set = 1, d.elasticity = 1;
+    for (k = 0; k < 3; k++) d.linear_vel[k] = v[k];
+    id = vrScene_Add(w, "edge", VR_SUPERQUADRIC, &d);
+    vrScene_Edit(w, id, vrScene_SetRotation, tilt);
+    vrScene_Edit(w, id, vrScene_SetSpin, spin);
+    ENSURE(vrScene_Step(w, 0) == 0);
+    before = vrScene_Stats(w);
+    ENSURE(vrScene_Step(w, 2) == 0);
+    after = vrScene_Stats(w);
+    st = vrScene_State(w, id);
+    printf("    vx %.17g after the wall, %lld collisions, energy %.17g -> %.17g\n", st.linear_vel[0],
+           after.collisions, before.energy, after.energy);
+    ENSURE(after.collisions == 1);
+    ENSURE(fabs(st.linear_vel[0] + v[0]) < 1e-9 && fabs(st.linear_vel[1] - v[1]) < 1e-9);
+    ENSURE(fabs(after.energy - before.energy) < 1e-9 * before.energy);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
 static const vrTest tests[] = {
     TEST(test_ball_dropped_from_h_bounces_to_h_e2),
     TEST(test_elastic_ball_keeps_energy_over_100_bounces),
@@ -249,6 +287,7 @@ static const vrTest tests[] = {
     TEST(test_restitution_half_against_wall_halves_speed),
     TEST(test_offcentre_cube_hit_conserves_momenta),
     TEST(test_offcentre_superquadric_hit_conserves_momenta),
+    TEST(test_a_superquadric_edge_bounces_off_a_wall_whole),
 };
 
 const vrTestSuite vrSuite_Impacts = {"impacts", tests, TEST_COUNT(tests), NULL, NULL, 0};
