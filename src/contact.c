@@ -99,8 +99,8 @@ static vec3 face_axis(const vrGap *g, int side, int f)
  * win and is not measured: the same answer as measuring every face, from
  * a few support climbs instead of two for every face of both shapes (a
  * superquadric's hundreds, at every halving of a touch's bisection). */
-/* the bounds of this many faces (both shapes') are kept from the first
- * pass for the second, not made again: most shapes have fewer */
+/* the bounds of the first this many faces (a's, then b's) are kept from
+ * the first pass for the second, not made again: most shapes have fewer */
 #define KEPT_BOUNDS 512
 
 static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
@@ -108,14 +108,14 @@ static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
     vrFaceBound fb[2];
     vec3 best = vec3_zero();
     double floor_gap, top_gap, top = -HUGE_VAL, kept[KEPT_BOUNDS];
-    int side, f, k, top_side = 0, top_f = 0, keep = g->a->p->nf + g->b->p->nf <= KEPT_BOUNDS;
+    int side, f, k, top_side = 0, top_f = 0;
     fb[0] = face_bound(g->a, cb, vrPosed_Vertex(g->b, g->vb));
     fb[1] = face_bound(g->b, ca, vrPosed_Vertex(g->a, g->va));
     for (side = 0, k = 0; side < 2; side++) {
         const vrPolyhedron *p = side ? g->b->p : g->a->p;
         for (f = 0; f < p->nf; f++, k++) {
             double ub = gap_bound(&fb[side], p, f);
-            if (keep) kept[k] = ub;
+            if (k < KEPT_BOUNDS) kept[k] = ub;
             if (ub > top) top = ub, top_side = side, top_f = f;
         }
     }
@@ -127,7 +127,8 @@ static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
         for (f = 0; f < p->nf; f++, k++) {
             vec3 u;
             double h;
-            if ((keep ? kept[k] : gap_bound(&fb[side], p, f)) < floor_gap) continue;
+            /* NOLINTNEXTLINE(clang-analyzer-core.UndefinedBinaryOperatorResult): the first pass wrote kept[k], the same faces in the same order */
+            if ((k < KEPT_BOUNDS ? kept[k] : gap_bound(&fb[side], p, f)) < floor_gap) continue;
             u = face_axis(g, side, f);
             h = side == top_side && f == top_f ? top_gap : vrGap_Along(g, u);   /* measured once */
             if (h > *gap) *gap = h, best = u;
