@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "island_contact.h"
+#include "grow.h"
 
 static double sweep(vrIslandSolve *s)
 {
@@ -168,35 +169,18 @@ void vrIslandScratch_Free(vrIslandScratch *x)
 /* room for n contacts' solve arrays */
 static int reserve_contacts(vrIslandScratch *x, int n)
 {
-    void *p;
-    if (n <= x->cap) return 0;
-    n = n > 2 * x->cap ? n : 2 * x->cap;
-    if (!(p = realloc(x->pt, (size_t)n * VR_ISLAND_POINTS * sizeof *x->pt))) return -1;
-    x->pt = p;
-    if (!(p = realloc(x->patch, (size_t)n * sizeof *x->patch))) return -1;
-    x->patch = p;
-    if (!(p = realloc(x->m, (size_t)n * VR_LCP_MAX * VR_LCP_MAX * sizeof *x->m))) return -1;
-    x->m = p;
-    if (!(p = realloc(x->pass, (size_t)n * sizeof *x->pass))) return -1;
-    x->pass = p;
-    if (!(p = realloc(x->lcp, (size_t)n * sizeof *x->lcp))) return -1;
-    x->lcp = p;
-    x->cap = n;
-    return 0;
+    return vrGrow((void **)&x->pt, &x->ptcap, n * VR_ISLAND_POINTS, sizeof *x->pt)
+        || vrGrow((void **)&x->patch, &x->patchcap, n, sizeof *x->patch)
+        || vrGrow((void **)&x->m, &x->mcap, n * VR_LCP_MAX * VR_LCP_MAX, sizeof *x->m)
+        || vrGrow((void **)&x->pass, &x->passcap, n, sizeof *x->pass)
+        || vrGrow((void **)&x->lcp, &x->lcpcap, n, sizeof *x->lcp) ? -1 : 0;
 }
 
 /* room for n bodies' copies and inertias */
 static int reserve_bodies(vrIslandScratch *x, int n)
 {
-    void *p;
-    if (n <= x->bodycap) return 0;
-    n = n > 2 * x->bodycap ? n : 2 * x->bodycap;
-    if (!(p = realloc(x->before, (size_t)n * sizeof *x->before))) return -1;
-    x->before = p;
-    if (!(p = realloc(x->inertia, (size_t)n * sizeof *x->inertia))) return -1;
-    x->inertia = p;
-    x->bodycap = n;
-    return 0;
+    return vrGrow((void **)&x->before, &x->beforecap, n, sizeof *x->before)
+        || vrGrow((void **)&x->inertia, &x->inertiacap, n, sizeof *x->inertia) ? -1 : 0;
 }
 
 static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,

@@ -78,15 +78,14 @@ typedef struct vrIslandStats {
  * mapped and unmapped them, and the page faults were a tenth of its time.
  * Zeroed, it is empty. */
 typedef struct vrIslandScratch {
-    struct vrSolvePoint *pt;
+    struct vrSolvePoint *pt;          /* each with its capacity (grow.h) */
     struct vrSolvePatch *patch;
     struct vrLcpFactor *lcp;
     double *m;
     int *pass;
-    int cap;                  /* contacts they hold */
     vrIslandBody *before;
     mat33 *inertia;
-    int bodycap;              /* bodies they hold */
+    int ptcap, patchcap, lcpcap, mcap, passcap, beforecap, inertiacap;
 } vrIslandScratch;
 void vrIslandScratch_Free(vrIslandScratch *x);
 

@@ -179,7 +179,7 @@ static int contact_step(vrWorld *w, Frame *f, double at, double end, const vrPar
 {
     int r = 0;
     if (f->T > w->t && moving_bodies(w)) {
-        expect_look_ahead(w, f, at, end, p);
+        if (w->s.gps > 0) expect_look_ahead(w, f, at, end, p);   /* only the workers' island step sends it */
         r = vrIsland_Step(w, at, end - at, err, n);
         w->ahead.valid = 0;
     }

@@ -66,7 +66,8 @@ struct vrWorld {
     int nchanged, changedcap;
     vrTouches touches;       /* scratch: an island step's touching pairs */
     /* loop.c: the grid and allow_instant a contact step's look-ahead will
-     * have if its island step changes nothing (valid = 1 during that step):
+     * have if its island step changes nothing (valid = 1 during that step,
+     * with workers only):
      * the SGP sends them with the step's request (sgp.c, ahead) */
     struct { vrGrid g; int allow, valid; } ahead;
     /* island_step.c: the ids of bodies that may be in a contact step (every
