@@ -114,7 +114,10 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     p->near = vrPair_Near(o, c.dist);
     p->overlap = c.dist < -VR_PENETRATION_TOL;
     vrPair_Settle(o, pi, 1, t);
-    if (!p->near) return 0;              /* in the envelope, not touching */
+    if (!p->near) {                      /* in the envelope, not touching */
+        if (o->p.use_heap) p->quiet_until = vrPair_ApproachHorizon(o, p, t, &c);
+        return 0;
+    }
     vrPair_ForEvents(o, p, t, &pa, &pb, &c);   /* the query above had the region: vrPair_EventQuery's */
     if (was_near && !was_overlap && t > t_prev && p->overlap) {
         double at = vrPair_Bisect(o, p, t_prev, t, &c, 0, wanted);
@@ -239,6 +242,7 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     if (!(g->frame_T == o->bp.T) && vrOwner_NewFrame(o, g) != 0) return -1;
     o->bp.t0 = g->t0;
     o->span_end = g->T;
+    o->step_h = g->h;
     o->closed_t = allow_instant ? NAN : g->t0;
     /* kept looks stand on the grid they were made on, and not where an
      * instant is closed (an event there is dropped, pair_events.c) */

@@ -70,6 +70,7 @@ struct vrOwner {
     double gc, region;        /* vrParams_Gap, vrParams_RegionLevel */
     double gather_t, gather_h; /* the last island step's time and length (vrOwner_Touching) */
     double span_end;          /* the end of the span being looked through: the next island step */
+    double step_h;            /* the grid step of the span being looked through */
     double closed_t;          /* an instant that had its VR_INSTANT_MAX: no event there (NAN: none) */
     double v_rest;            /* sqrt(2 |a| g_c), SPEC 3.1, 7 */
     vrBody **body;            /* by id, NULL when not held */
@@ -199,5 +200,7 @@ int vrOwner_PutOffKey(vrOwner *o, int pi, double dist, vec3 n);
 /* quiet.c: how far ahead the pair is proved quiet (-INFINITY: not) */
 double vrPair_QuietHorizon(vrOwner *o, const vrPair *p, double t, const vrPose *pa, const vrPose *pb,
                            const vrContact *c);
+/* a pair in the envelope, not touching: quiet until it may touch or leave */
+double vrPair_ApproachHorizon(vrOwner *o, const vrPair *p, double t, const vrContact *c);
 
 #endif

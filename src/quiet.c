@@ -3,8 +3,10 @@
  * heap = 0 looks and finds nothing, so the bits are the same):
  *   box_face_axis, over_face   a level face of a static box, a ball's centre over it
  *   quiet_slide                a ball sliding on or grazing such a face
- *   vrPair_QuietHorizon        how far ahead the proofs hold */
+ *   vrPair_QuietHorizon        how far ahead the proofs hold
+ *   stays_within, vrPair_ApproachHorizon   a pair in the envelope, not touching */
 #include "owner_state.h"
+#include "schedule.h"
 
 /* The axis (0..2) the unit normal n lies exactly along, when B is a
  * static unrotated box, so that n can be the normal of one of its faces;
@@ -64,6 +66,9 @@ static int quiet_slide(vrOwner *o, const vrPair *p, double t, double until, cons
  * looked at: rest and support are decided from the bodies' states, and
  * whatever changes either body flags the pair. */
 #define QUIET_AHEAD 0.1   /* s */
+/* how far inside the envelope a pair proved to stay in it stays: far above
+ * the rounding of positions (1e-13 m a minute into a run) */
+#define KEY_GAP 1e-9
 
 static int quiet_to(vrOwner *o, const vrPair *p, double t, double until, const vrPose *pa, const vrPose *pb,
                     const vrContact *c)
@@ -78,4 +83,69 @@ double vrPair_QuietHorizon(vrOwner *o, const vrPair *p, double t, const vrPose *
     double T = o->bp.T;
     if (!quiet_to(o, p, t, T, pa, pb, c)) return -INFINITY;
     return quiet_to(o, p, t, T + QUIET_AHEAD, pa, pb, c) ? T + QUIET_AHEAD : T;
+}
+
+/* A free body's surface points move at most |omega| R faster than its
+ * centre (a true sphere's surface does not matter: its distance is its
+ * centre's, less the radius) */
+static double surface_spin(const vrBody *b)
+{
+    return b->shape.kind == VR_SHAPE_SPHERE || b->rot == VR_ROT_NONE ? 0.0 : vrBody_SpinBound(b) * b->r_out;
+}
+
+/* when either body's speed could stop growing at the cap (INFINITY: never) */
+static double cap_after(const vrBody *b, double t)
+{
+    return vrBody_IsFree(b) ? b->m.t0 + b->m.tcap - t : INFINITY;
+}
+
+/* the first tau with dist + s tau + acc tau^2 / 2 = level (dist < level) */
+static double reach_level(double dist, double s, double acc, double level)
+{
+    double room = level - dist;
+    if (acc == 0) return s > 0 ? room / s : INFINITY;
+    return 2.0 * room / (s + sqrt(s * s + 2.0 * acc * room));
+}
+
+/* How long the pair surely stays within level (its distance dist at t).
+ * Two points of the bodies that are dist apart at t move apart no faster
+ * than the centres' relative velocity, which changes by at most |a_b -
+ * a_a| a second until a speed cap and |a_a| + |a_b| after, plus each
+ * body's |omega| R; the distance is at most theirs.  dist is canonical:
+ * the true distance may be VR_QUICK_CLEAR above it (contact.h). */
+static double stays_within(vrBody *A, vrBody *B, double t, double dist, double level)
+{
+    vec3 va, vb;
+    double s, tau;
+    vrBody_Velocity(A, t, &va);
+    vrBody_Velocity(B, t, &vb);
+    s = vec3_len(vec3_sub(vb, va)) + surface_spin(A) + surface_spin(B);
+    dist += VR_QUICK_CLEAR;
+    if (!(dist < level)) return t;
+    tau = reach_level(dist, s, vec3_len(vec3_sub(B->m.a, A->m.a)), level);
+    if (tau > vr_min(cap_after(A, t), cap_after(B, t)))
+        tau = reach_level(dist, s, vec3_len(A->m.a) + vec3_len(B->m.a), level);
+    return t + tau;
+}
+
+/* A pair in the envelope and not touching has an event only once it comes
+ * within g_c (an impact) or touches; until it leaves the envelope, heap =
+ * 0 would find it there at every grid point and do nothing.  So it is
+ * quiet until the earlier of: the key toward the touching level (its
+ * distance cannot come down to it before), and the time it surely stays
+ * in the envelope (its state, inside and not near, is then what every
+ * look would find).  A pair after an impact flies out of the envelope,
+ * and one coming in flies through it to g_c: a look every grid step was
+ * most of a crowded room's looks.  -INFINITY when not quiet past t. */
+double vrPair_ApproachHorizon(vrOwner *o, const vrPair *p, double t, const vrContact *c)
+{
+    vrBody *A = o->body[p->a], *B = o->body[p->b];
+    double near = o->gc + VR_PENETRATION_TOL + VR_QUICK_CLEAR, stay, until;
+    if (!(c->dist > near)) return -INFINITY;
+    /* the cheap bound first: a horizon short of the next grid point skips
+     * nothing, and the key need not be followed past it */
+    stay = stays_within(A, B, t, c->dist, o->p.d - KEY_GAP);
+    if (!(stay >= t + o->step_h)) return -INFINITY;
+    until = vr_min(stay, vrSchedule_KeyUpTo(A, B, t, c->dist, c->n, near, &o->p.flight, stay));
+    return until >= t + o->step_h ? until : -INFINITY;
 }

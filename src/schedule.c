@@ -225,11 +225,11 @@ static double cap_time(const vrBody *b, double t)
  * at most KEY_HORIZON ahead, from `known`, the key the speed bounds gave
  * (it cannot come earlier). */
 #define KEY_HORIZON 1.0
-static double key_by_vertices(vrBody *a, vrBody *b, double t, vec3 n, double d, double known)
+static double key_by_vertices(vrBody *a, vrBody *b, double t, vec3 n, double d, double known, double enough)
 {
     vrPose pa, pb;
     vrDistBound db;
-    double until = vr_min(t + KEY_HORIZON, vr_min(cap_time(a, t), cap_time(b, t)));
+    double until = vr_min(vr_min(t + KEY_HORIZON, enough), vr_min(cap_time(a, t), cap_time(b, t)));
     if (known >= until) return known;   /* it could say no more */
     vrBody_ShapePose(a, t, &pa);
     vrBody_ShapePose(b, t, &pb);
@@ -244,7 +244,8 @@ static double speed_cap(const vrBody *b, const vrFlight *f)
     return !moves(b) ? 0 : b->m.over_cap ? INFINITY : f->max_linear;
 }
 
-static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f, int turning)
+static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f, int turning,
+                  double enough)
 {
     vrClosing whole, rate;
     vec3 va, vb;
@@ -269,12 +270,18 @@ static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d,
     whole.room -= spin_margin(a) + spin_margin(b);
     rate.spin = spin_rate(a) + spin_rate(b);
     known = t + vr_max(key_for(&whole, n, a, b), key_for(&rate, n, a, b));
-    return vr_max(known, key_by_vertices(a, b, t, n, d, known));
+    return vr_max(known, key_by_vertices(a, b, t, n, d, known, enough));
 }
 
 double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)
 {
-    return key(a, b, t, dist, n, d, f, 1);
+    return key(a, b, t, dist, n, d, f, 1, INFINITY);
+}
+
+double vrSchedule_KeyUpTo(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f,
+                          double enough)
+{
+    return key(a, b, t, dist, n, d, f, 1, enough);
 }
 
 /* Two bodies flying free under the same force move in straight lines
@@ -308,7 +315,7 @@ static double linear_key(const vrBody *a, const vrBody *b, double t, double room
 
 double vrSchedule_SphereKey(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)
 {
-    double bound = key(a, b, t, dist, n, d, f, 0), room = dist - d - KEY_MARGIN;
+    double bound = key(a, b, t, dist, n, d, f, 0, INFINITY), room = dist - d - KEY_MARGIN;
     if (!(room > 0)) return bound;
     return vr_max(bound, linear_key(a, b, t, room));
 }

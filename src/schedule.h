@@ -66,6 +66,10 @@ long vrSchedule_FirstPointAtOrAfter(const vrGrid *g, double t);
  * (distbound.h).  Each bound holds, so the latest does.  Returns t when
  * the pair is due now, INFINITY when it can never close. */
 double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f);
+/* The same, for a caller that needs no key past `enough`: any time not
+ * before it once the key is surely that late (the vertex bounds stop there) */
+double vrSchedule_KeyUpTo(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f,
+                          double enough);
 /* The same from the bounding spheres about the centres (a sphere's own),
  * which do not change as the bodies turn: dist is the distance between the
  * spheres and n the direction between the centres. */
