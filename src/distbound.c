@@ -361,3 +361,77 @@ int vrDistBound_Decide(const vrDistBound *db, double t, double d, double tol)
     if (upper < d - tol) return 1;
     return -1;
 }
+
+/* A tau >= 0 no later than the first at which c0 + c1 tau + c2 tau^2 +
+ * c3 tau^3 (every ci >= 0, c0 < level) reaches level, and close to it.
+ * Each term alone up to a third of the room is below it.  The curve is
+ * convex and rising: a Newton step from below lands past the crossing,
+ * and the chord between the two lies above the curve, so where the chord
+ * reaches level is still before the crossing.  INFINITY when it never
+ * rises. */
+static double cubic_at(double c0, double c1, double c2, double c3, double tau)
+{
+    return c0 + tau * (c1 + tau * (c2 + tau * c3));
+}
+
+static double rise_to(double c0, double c1, double c2, double c3, double level)
+{
+    double third = (level - c0) / 3.0, lo = INFINITY;
+    int i;
+    if (c1 > 0) lo = third / c1;
+    if (c2 > 0) lo = vr_min(lo, sqrt(third / c2));
+    if (c3 > 0) lo = vr_min(lo, cbrt(third / c3));
+    for (i = 0; i < 3 && lo < INFINITY; i++) {
+        double f = cubic_at(c0, c1, c2, c3, lo) - level, slope = c1 + lo * (2 * c2 + 3 * lo * c3), hi, g;
+        if (!(f < 0 && slope > 0)) break;
+        hi = lo - f / slope;
+        g = cubic_at(c0, c1, c2, c3, hi) - level;
+        if (!(g > f)) break;
+        lo = vr_max(lo, lo - f * (hi - lo) / (g - f));
+    }
+    return lo;
+}
+
+/* the plane bound's time: its height rising at most as its rising terms,
+ * and the point staying over the face */
+static double plane_stays(const vrPlaneBound *pl, double level)
+{
+    if (!(pl->h0 < level)) return 0;
+    return vr_min(rise_to(pl->h0, vr_max(pl->h1, 0), vr_max(pl->h2, 0), pl->cubic, level),
+                  rise_to(0, pl->move1, pl->move2, pl->cubic, pl->room));
+}
+
+/* the first tau > 0 with |g + u tau| = L, given |g| < L */
+static double line_leaves(vec3 g, vec3 u, double L)
+{
+    double a = vec3_dot(u, u), b = vec3_dot(g, u), c = vec3_dot(g, g) - L * L;
+    if (a == 0) return INFINITY;
+    /* the positive root of a tau^2 + 2 b tau + c (c < 0), in the stable form */
+    return b > 0 ? -c / (b + sqrt(b * b - a * c)) : (-b + sqrt(b * b - a * c)) / a;
+}
+
+/* The witness points' bound: their gap g + u tau + acc tau^2 / 2 within
+ * jerk |tau|^3 / 6 is at most |g + u tau| (convex: above L only past its
+ * root) plus the rest, which only grows; so a root of |g + u tau| = L
+ * less the rest at a later time is a time before which the bound holds. */
+static double witness_stays(const vrDistBound *db, double level)
+{
+    vec3 u = vec3_sub(db->b.u, db->a.u);
+    double acc = vec3_len(vec3_sub(db->b.acc, db->a.acc)), jerk = db->a.jerk + db->b.jerk;
+    double L = level + db->shrink, tau, rest;
+    if (!(vec3_len(db->gap0) < L)) return 0;
+    tau = line_leaves(db->gap0, u, L);
+    if (tau == INFINITY) return rise_to(vec3_len(db->gap0), 0, 0.5 * acc, jerk / 6.0, L);
+    rest = (0.5 * acc + jerk / 6.0 * tau) * tau * tau;
+    if (!(vec3_len(db->gap0) < L - rest)) return 0;
+    return line_leaves(db->gap0, u, L - rest);
+}
+
+double vrDistBound_StaysWithin(const vrDistBound *db, double level, double until)
+{
+    double tau = 0;
+    if (!db->valid) return db->te;
+    if (db->has_plane) tau = plane_stays(&db->plane, level);
+    if (db->has_upper) tau = vr_max(tau, witness_stays(db, level));
+    return vr_min(db->te + tau, until);
+}

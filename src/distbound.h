@@ -99,4 +99,10 @@ double vrDistBound_Clear(const vrDistBound *db, double d, double from, double un
  * certainly > d, -1 when the bounds come within tol of d (or are invalid). */
 int vrDistBound_Decide(const vrDistBound *db, double t, double d, double tol);
 
+/* A time up to `until` (in the window) to which the distance surely stays
+ * at most level: by the witness points (upper bound) or, with one body a
+ * frozen box, by the other's lowest point rising no higher over the box's
+ * face and staying over it; te when the bounds say nothing. */
+double vrDistBound_StaysWithin(const vrDistBound *db, double level, double until);
+
 #endif

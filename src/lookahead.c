@@ -115,7 +115,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
     p->overlap = c.dist < -VR_PENETRATION_TOL;
     vrPair_Settle(o, pi, 1, t);
     if (!p->near) {                      /* in the envelope, not touching */
-        if (o->p.use_heap) p->quiet_until = vrPair_ApproachHorizon(o, p, t, &c);
+        if (o->p.use_heap) p->quiet_until = vrPair_ApproachHorizon(o, p, t, &pa, &pb, &c);
         return 0;
     }
     vrPair_ForEvents(o, p, t, &pa, &pb, &c);   /* the query above had the region: vrPair_EventQuery's */

@@ -201,6 +201,7 @@ int vrOwner_PutOffKey(vrOwner *o, int pi, double dist, vec3 n);
 double vrPair_QuietHorizon(vrOwner *o, const vrPair *p, double t, const vrPose *pa, const vrPose *pb,
                            const vrContact *c);
 /* a pair in the envelope, not touching: quiet until it may touch or leave */
-double vrPair_ApproachHorizon(vrOwner *o, const vrPair *p, double t, const vrContact *c);
+double vrPair_ApproachHorizon(vrOwner *o, const vrPair *p, double t, const vrPose *pa, const vrPose *pb,
+                              const vrContact *c);
 
 #endif

@@ -128,6 +128,37 @@ static double stays_within(vrBody *A, vrBody *B, double t, double dist, double l
     return t + tau;
 }
 
+/* the point of box b nearest p: a point of the body whatever p is */
+static vec3 onto_box(const vrBody *b, const vrPose *pose, vec3 p)
+{
+    vec3 q = mat33_tmulv(&pose->R, vec3_sub(p, pose->p)), h = b->shape.half;
+    q = vec3_make(vr_min(vr_max(q.x, -h.x), h.x), vr_min(vr_max(q.y, -h.y), h.y), vr_min(vr_max(q.z, -h.z), h.z));
+    return vec3_add(pose->p, mat33_mulv(&pose->R, q));
+}
+
+/* The same from distbound.h's upper bounds, which follow the motion: the
+ * distance is at most that of two points of the bodies carried along (a
+ * sphere's contact points are its own; a box's canonical point, which need
+ * not be, is moved onto it, which only makes the start farther), and with
+ * a frozen box (a wall, a table top) at most the other body's lowest point
+ * over its face while it stays over it.  A ball leaving a wall at a slant
+ * leaves the envelope as fast as it rises from the face, not as fast as it
+ * moves.  t when there are no such bounds. */
+static double stays_by_bounds(vrOwner *o, const vrPair *p, double t, const vrPose *pa, const vrPose *pb,
+                              const vrContact *c, double level)
+{
+    vrBody *A = o->body[p->a], *B = o->body[p->b];
+    vrDistBound db;
+    double hi = vr_min(o->bp.T + QUIET_AHEAD, t + vr_min(cap_after(A, t), cap_after(B, t)));
+    int boxes = A->shape.kind == VR_SHAPE_BOX && B->shape.kind == VR_SHAPE_BOX;
+    int on_bodies = vrBody_IsSphere(A) || vrBody_IsSphere(B) || boxes;
+    vec3 wa = c->pa, wb = c->pb;
+    if (vrBody_IsFree(A) && vrBody_IsFree(B) && !on_bodies) return t;
+    if (boxes) wa = onto_box(A, pa, wa), wb = onto_box(B, pb, wb);
+    vrDistBound_Make(&db, A, pa, B, pb, t, wa, wb, on_bodies, t, hi);
+    return vrDistBound_StaysWithin(&db, level, hi);
+}
+
 /* A pair in the envelope and not touching has an event only once it comes
  * within g_c (an impact) or touches; until it leaves the envelope, heap =
  * 0 would find it there at every grid point and do nothing.  So it is
@@ -137,14 +168,15 @@ static double stays_within(vrBody *A, vrBody *B, double t, double dist, double l
  * look would find).  A pair after an impact flies out of the envelope,
  * and one coming in flies through it to g_c: a look every grid step was
  * most of a crowded room's looks.  -INFINITY when not quiet past t. */
-double vrPair_ApproachHorizon(vrOwner *o, const vrPair *p, double t, const vrContact *c)
+double vrPair_ApproachHorizon(vrOwner *o, const vrPair *p, double t, const vrPose *pa, const vrPose *pb,
+                              const vrContact *c)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
-    double near = o->gc + VR_PENETRATION_TOL + VR_QUICK_CLEAR, stay, until;
+    double near = o->gc + VR_PENETRATION_TOL + VR_QUICK_CLEAR, level = o->p.d - KEY_GAP, stay, until;
     if (!(c->dist > near)) return -INFINITY;
-    /* the cheap bound first: a horizon short of the next grid point skips
-     * nothing, and the key need not be followed past it */
-    stay = stays_within(A, B, t, c->dist, o->p.d - KEY_GAP);
+    /* the bounds on leaving first: a horizon short of the next grid point
+     * skips nothing, and the key need not be followed past it */
+    stay = vr_max(stays_within(A, B, t, c->dist, level), stays_by_bounds(o, p, t, pa, pb, c, level));
     if (!(stay >= t + o->step_h)) return -INFINITY;
     until = vr_min(stay, vrSchedule_KeyUpTo(A, B, t, c->dist, c->n, near, &o->p.flight, stay));
     return until >= t + o->step_h ? until : -INFINITY;
