@@ -412,19 +412,25 @@ static double line_leaves(vec3 g, vec3 u, double L)
 
 /* The witness points' bound: their gap g + u tau + acc tau^2 / 2 within
  * jerk |tau|^3 / 6 is at most |g + u tau| (convex: above L only past its
- * root) plus the rest, which only grows; so a root of |g + u tau| = L
- * less the rest at a later time is a time before which the bound holds. */
+ * root) plus the rest, which only grows.  So, for any tau_x, the root of
+ * |g + u tau| = L less the rest at tau_x, if no later than tau_x, is a
+ * time before which the bound holds; tau_x starts where the line alone
+ * leaves and shrinks while the rest there leaves no room.  Or, at the
+ * least, what the triangle inequality gives. */
 static double witness_stays(const vrDistBound *db, double level)
 {
     vec3 u = vec3_sub(db->b.u, db->a.u);
     double acc = vec3_len(vec3_sub(db->b.acc, db->a.acc)), jerk = db->a.jerk + db->b.jerk;
-    double L = level + db->shrink, tau, rest;
-    if (!(vec3_len(db->gap0) < L)) return 0;
-    tau = line_leaves(db->gap0, u, L);
-    if (tau == INFINITY) return rise_to(vec3_len(db->gap0), 0, 0.5 * acc, jerk / 6.0, L);
-    rest = (0.5 * acc + jerk / 6.0 * tau) * tau * tau;
-    if (!(vec3_len(db->gap0) < L - rest)) return 0;
-    return line_leaves(db->gap0, u, L - rest);
+    double L = level + db->shrink, g = vec3_len(db->gap0), tri, x;
+    int i;
+    if (!(g < L)) return 0;
+    tri = rise_to(g, vec3_len(u), 0.5 * acc, jerk / 6.0, L);
+    x = line_leaves(db->gap0, u, L);
+    for (i = 0; i < 4 && x < INFINITY; i++, x *= 0.25) {
+        double rest = (0.5 * acc + jerk / 6.0 * x) * x * x;
+        if (g < L - rest) return vr_max(tri, vr_min(x, line_leaves(db->gap0, u, L - rest)));
+    }
+    return tri;
 }
 
 double vrDistBound_StaysWithin(const vrDistBound *db, double level, double until)
