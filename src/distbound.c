@@ -426,9 +426,10 @@ static double witness_stays(const vrDistBound *db, double level)
     if (!(g < L)) return 0;
     tri = rise_to(g, vec3_len(u), 0.5 * acc, jerk / 6.0, L);
     x = line_leaves(db->gap0, u, L);
-    for (i = 0; i < 4 && x < INFINITY; i++, x *= 0.25) {
+    for (i = 0; i < 4 && x < INFINITY; i++) {
         double rest = (0.5 * acc + jerk / 6.0 * x) * x * x;
         if (g < L - rest) return vr_max(tri, vr_min(x, line_leaves(db->gap0, u, L - rest)));
+        x *= 0.25;
     }
     return tri;
 }
