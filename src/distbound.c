@@ -362,6 +362,11 @@ int vrDistBound_Decide(const vrDistBound *db, double t, double d, double tol)
     return -1;
 }
 
+static double cubic_at(double c0, double c1, double c2, double c3, double tau)
+{
+    return c0 + tau * (c1 + tau * (c2 + tau * c3));
+}
+
 /* A tau >= 0 no later than the first at which c0 + c1 tau + c2 tau^2 +
  * c3 tau^3 (every ci >= 0, c0 < level) reaches level, and close to it.
  * Each term alone up to a third of the room is below it.  The curve is
@@ -369,11 +374,6 @@ int vrDistBound_Decide(const vrDistBound *db, double t, double d, double tol)
  * and the chord between the two lies above the curve, so where the chord
  * reaches level is still before the crossing.  INFINITY when it never
  * rises. */
-static double cubic_at(double c0, double c1, double c2, double c3, double tau)
-{
-    return c0 + tau * (c1 + tau * (c2 + tau * c3));
-}
-
 static double rise_to(double c0, double c1, double c2, double c3, double level)
 {
     double third = (level - c0) / 3.0, lo = INFINITY;

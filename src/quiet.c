@@ -4,7 +4,7 @@
  *   box_face_axis, over_face   a level face of a static box, a ball's centre over it
  *   quiet_slide                a ball sliding on or grazing such a face
  *   vrPair_QuietHorizon        how far ahead the proofs hold
- *   stays_within, vrPair_ApproachHorizon   a pair in the envelope, not touching */
+ *   stays_within, stays_by_bounds, vrPair_ApproachHorizon   a pair in the envelope, not touching */
 #include "owner_state.h"
 #include "schedule.h"
 
@@ -68,7 +68,7 @@ static int quiet_slide(vrOwner *o, const vrPair *p, double t, double until, cons
 #define QUIET_AHEAD 0.1   /* s */
 /* how far inside the envelope a pair proved to stay in it stays: far above
  * the rounding of positions (1e-13 m a minute into a run) */
-#define KEY_GAP 1e-9
+#define STAY_MARGIN 1e-9
 
 static int quiet_to(vrOwner *o, const vrPair *p, double t, double until, const vrPose *pa, const vrPose *pb,
                     const vrContact *c)
@@ -85,20 +85,6 @@ double vrPair_QuietHorizon(vrOwner *o, const vrPair *p, double t, const vrPose *
     return quiet_to(o, p, t, T + QUIET_AHEAD, pa, pb, c) ? T + QUIET_AHEAD : T;
 }
 
-/* A free body's surface points move at most |omega| R faster than its
- * centre (a true sphere's surface does not matter: its distance is its
- * centre's, less the radius) */
-static double surface_spin(const vrBody *b)
-{
-    return b->shape.kind == VR_SHAPE_SPHERE || b->rot == VR_ROT_NONE ? 0.0 : vrBody_SpinBound(b) * b->r_out;
-}
-
-/* when either body's speed could stop growing at the cap (INFINITY: never) */
-static double cap_after(const vrBody *b, double t)
-{
-    return vrBody_IsFree(b) ? b->m.t0 + b->m.tcap - t : INFINITY;
-}
-
 /* the first tau with dist + s tau + acc tau^2 / 2 = level (dist < level) */
 static double reach_level(double dist, double s, double acc, double level)
 {
@@ -111,7 +97,9 @@ static double reach_level(double dist, double s, double acc, double level)
  * Two points of the bodies that are dist apart at t move apart no faster
  * than the centres' relative velocity, which changes by at most |a_b -
  * a_a| a second until a speed cap and |a_a| + |a_b| after, plus each
- * body's |omega| R; the distance is at most theirs.  dist is canonical:
+ * body's |omega| R (vrSchedule_SpinReach: a true sphere's surface does not
+ * matter, its distance is its centre's less the radius); the distance is
+ * at most theirs.  dist is canonical:
  * the true distance may be VR_QUICK_CLEAR above it (contact.h). */
 static double stays_within(vrBody *A, vrBody *B, double t, double dist, double level)
 {
@@ -119,11 +107,11 @@ static double stays_within(vrBody *A, vrBody *B, double t, double dist, double l
     double s, tau;
     vrBody_Velocity(A, t, &va);
     vrBody_Velocity(B, t, &vb);
-    s = vec3_len(vec3_sub(vb, va)) + surface_spin(A) + surface_spin(B);
+    s = vec3_len(vec3_sub(vb, va)) + vrSchedule_SpinReach(A) + vrSchedule_SpinReach(B);
     dist += VR_QUICK_CLEAR;
     if (!(dist < level)) return t;
     tau = reach_level(dist, s, vec3_len(vec3_sub(B->m.a, A->m.a)), level);
-    if (tau > vr_min(cap_after(A, t), cap_after(B, t)))
+    if (tau > vr_min(vrSchedule_CapLeft(A, t), vrSchedule_CapLeft(B, t)))
         tau = reach_level(dist, s, vec3_len(A->m.a) + vec3_len(B->m.a), level);
     return t + tau;
 }
@@ -149,7 +137,7 @@ static double stays_by_bounds(vrOwner *o, const vrPair *p, double t, const vrPos
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
     vrDistBound db;
-    double hi = vr_min(o->bp.T + QUIET_AHEAD, t + vr_min(cap_after(A, t), cap_after(B, t)));
+    double hi = vr_min(o->bp.T + QUIET_AHEAD, t + vr_min(vrSchedule_CapLeft(A, t), vrSchedule_CapLeft(B, t)));
     int boxes = A->shape.kind == VR_SHAPE_BOX && B->shape.kind == VR_SHAPE_BOX;
     int on_bodies = vrBody_IsSphere(A) || vrBody_IsSphere(B) || boxes;
     vec3 wa = c->pa, wb = c->pb;
@@ -172,7 +160,7 @@ double vrPair_ApproachHorizon(vrOwner *o, const vrPair *p, double t, const vrPos
                               const vrContact *c)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
-    double near = o->gc + VR_PENETRATION_TOL + VR_QUICK_CLEAR, level = o->p.d - KEY_GAP, stay, until;
+    double near = o->gc + VR_PENETRATION_TOL + VR_QUICK_CLEAR, level = o->p.d - STAY_MARGIN, stay, until;
     if (!(c->dist > near)) return -INFINITY;
     /* the bounds on leaving first: a horizon short of the next grid point
      * skips nothing, and the key need not be followed past it */

@@ -117,13 +117,6 @@ static double spin_rate(const vrBody *b)
 
 static int moves(const vrBody *b) { return vrBody_IsFree(b); }
 
-/* time left before b's speed stops growing */
-static double cap_left(const vrBody *b, double t)
-{
-    double left = b->m.tcap - (t - b->m.t0);
-    return moves(b) ? (left > 0 ? left : 0) : INFINITY;
-}
-
 /* distance covered in time L at speed c growing at slope k */
 static double covered(double c, double k, double L)
 {
@@ -260,7 +253,7 @@ static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d,
     /* until either body reaches the speed cap the relative acceleration is
      * exactly a_b - a_a (0 between two free bodies under the same force) */
     whole.da = vec3_sub(b->m.a, a->m.a);
-    whole.t1 = vr_min(cap_left(a, t), cap_left(b, t));
+    whole.t1 = vr_min(vrSchedule_CapLeft(a, t), vrSchedule_CapLeft(b, t));
     /* turning bodies: the thesis takes (R - r) off the distance at once;
      * turning at omega also cannot close faster than omega R.  Each bound
      * holds, so the later time does. */
@@ -309,7 +302,7 @@ static double linear_key(const vrBody *a, const vrBody *b, double t, double room
     D = len - room;
     if (!(D > 0)) return t;
     tau = first_root(vec3_dot(dv, dv), 2 * vec3_dot(dx, dv), room * (len + D));
-    t1 = vr_min(cap_left(a, t), cap_left(b, t));
+    t1 = vr_min(vrSchedule_CapLeft(a, t), vrSchedule_CapLeft(b, t));
     return t + vr_min(tau, t1);
 }
 

@@ -40,6 +40,13 @@ static inline double vrSchedule_SpinReach(const vrBody *b)
 {
     return vrBody_SpinBound(b) * (b->shape.kind == VR_SHAPE_SPHERE ? 0.0 : b->r_out);
 }
+/* time left after t before b's speed stops growing at the cap (0 once it
+ * has; INFINITY when it never will, or b is not free) */
+static inline double vrSchedule_CapLeft(const vrBody *b, double t)
+{
+    double left = b->m.tcap - (t - b->m.t0);
+    return vrBody_IsFree(b) ? (left > 0 ? left : 0) : INFINITY;
+}
 /* the grid of [ts, T] depends on the bodies' reach (no forced step, time left) */
 static inline int vrSchedule_NeedsReach(double ts, double T, double internal_step)
 {
