@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "coplanar.h"
+#include "progress.h"
 #include "hull.h"
 
 /* Drops the vertices that lie on fewer than three polygons (inside an edge
@@ -85,7 +86,9 @@ static int hull_attempt(const vec3 *pts, int n, const int *orig, double tol, dou
     vrHullMesh mesh = {0};
     vrLoops loops = {0};
     int rc = vrQuickhull(pts, n, tolabs, &mesh, err, errlen);
+    vrProgress_Now();
     if (rc == 0) rc = vrCoplanar_Merge(&mesh, pts, n, tolabs, &loops, err, errlen);
+    vrProgress_Now();
     if (rc == 0) rc = make_polyhedron(pts, n, &loops, orig, tol, src, out, err, errlen);
     vrHullMesh_Free(&mesh);
     vrLoops_Free(&loops);

@@ -23,6 +23,7 @@
 #include <string.h>
 #include "mass.h"
 #include "polyhedron.h"
+#include "progress.h"
 
 int vrGeom_Fail(char *err, size_t errlen, const char *fmt, ...)
 {
@@ -363,7 +364,7 @@ static int from_faces(const vec3 *vert, int nv, const int *face_start, const int
                       int recentre, vrPolyhedron **out, char *err, size_t errlen)
 {
     vrPolyhedron *p;
-    int nh;
+    int nh, rc;
     *out = NULL;
     if (check_loops(nv, face_start, face_vert, nf, err, errlen) != 0) return -1;
     nh = face_start[nf];
@@ -373,14 +374,21 @@ static int from_faces(const vec3 *vert, int nv, const int *face_start, const int
     memcpy(p->vert, vert, sizeof *vert * nv);
     memcpy(p->face_start, face_start, sizeof *face_start * (nf + 1));
     memcpy(p->face_vert, face_vert, sizeof *face_vert * nh);
-    if (build_graph(p, err, errlen) != 0 || (recentre && centre(p, err, errlen) != 0)
-        || compute_planes(p, err, errlen) != 0
-        || check_convex(p, 4 * tol * vrGeom_Size(p->vert, nv), err, errlen) != 0) {
+    /* a million vertices take seconds: the progress hook hears each stage */
+    rc = build_graph(p, err, errlen);
+    vrProgress_Now();
+    if (rc == 0 && recentre) rc = centre(p, err, errlen);
+    if (rc == 0) rc = compute_planes(p, err, errlen);
+    vrProgress_Now();
+    if (rc == 0) rc = check_convex(p, 4 * tol * vrGeom_Size(p->vert, nv), err, errlen);
+    vrProgress_Now();
+    if (rc != 0) {
         vrPolyhedron_Free(p);
         return -1;
     }
     compute_margins(p);
     vrMass_Compute(p);
+    vrProgress_Now();
     *out = p;
     return 0;
 }

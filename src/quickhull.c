@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "progress.h"
 #include "grow.h"
 #include "orient.h"
 #include "polyhedron.h"
@@ -249,6 +250,7 @@ static int quickhull(Hull *h, double tolabs, char *err, size_t errlen)
     if (initial_simplex(h, tolabs, err, errlen) != 0) return -1;
     while (h->pending.n > 0) {
         int f = h->pending.a[--h->pending.n], rc;
+        vrProgress_Tick();
         if (h->face[f].state != FACE_ALIVE || h->face[f].head < 0) continue;
         rc = add_point(h, f);
         if (rc == -1) return vrGeom_Fail(err, errlen, "out of memory");

@@ -570,6 +570,32 @@ static int test_fewer_rounds_change_no_bit(void)
     return 0;
 }
 
+/* A fine superquadric (ures = vres = 600: 360,000 points, about 1.5 s
+ * to hull here, longer under ASan) falling on a floor: a forked worker
+ * building it at setup is busy past SPEC 5's 1 s deadline, and its
+ * heartbeats while it builds (progress.h) keep it from being declared
+ * dead (before: "all 1 workers died").  Same bits as serial. */
+static void fine_superquadric(vrWorld *w)
+{
+    vrObjectDef d = vrObjectDef_Default(VR_SUPERQUADRIC);
+    d.ures = d.vres = 600;
+    d.exp1 = d.exp2 = 0.6;
+    d.linear_vel[2] = -2;
+    vrScene_Add(w, "fine", VR_SUPERQUADRIC, &d);
+    vrScene_Box(w, "floor", vec3_make(2, 2, 0.1), vec3_make(0, 0, -1.2), -1, 1);
+}
+
+static int test_a_long_build_is_not_a_death(void)
+{
+    vrRun serial = run(fine_superquadric, 0, UDPM, VR_DIST_ROUND_ROBIN, 3);
+    vrRun forked = run(fine_superquadric, 1, UDPM, VR_DIST_ROUND_ROBIN, 3);
+    ENSURE_MSG(!serial.failed, "serial: %s", serial.err);
+    ENSURE_MSG(!forked.failed, "1 forked worker: %s", forked.err);
+    ENSURE(serial.stats.collisions > 0);   /* it reached the floor */
+    ENSURE_MSG(forked.hash == serial.hash, "hash %016llx, serial %016llx", forked.hash, serial.hash);
+    return 0;
+}
+
 /* the serial run every other is compared with */
 static int run_serial(void)
 {
@@ -597,6 +623,7 @@ static const vrTest tests[] = {
     TEST(test_improved_distribution_needs_fewer_copies_on_random_60),
     TEST(test_messages_do_not_grow_with_objects),
     TEST(test_fewer_rounds_change_no_bit),
+    TEST(test_a_long_build_is_not_a_death),
 };
 
 const vrTestSuite vrSuite_Parallel = {"parallel", tests, TEST_COUNT(tests), run_serial, NULL, 1};

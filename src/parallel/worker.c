@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "progress.h"
 #include "worker_hold.h"
 #include "worker_reply.h"
 #include "wire.h"
@@ -403,6 +404,7 @@ int vrWorker_Main(const char *url, long long nonce, int forked, char *err, size_
         snprintf(err, n, "out of memory");
         return -1;
     }
+    vrProgress_Set(vrWorker_Beat, k);   /* a long build is not silence (progress.h) */
     while (!k->done) {
         double now;
         vrLink_Handle(&link, (int)HELLO_MS);
@@ -412,6 +414,7 @@ int vrWorker_Main(const char *url, long long nonce, int forked, char *err, size_
             vrWorker_Tick(k);
         }
     }
+    vrProgress_Set(NULL, NULL);
     vrWorker_Free(k);
     vrLink_Close(&link);
     return 0;
