@@ -1,13 +1,13 @@
 /* build.c — an object's shape, mass and initial state from its definition.
  *
- *   copy_draw_mesh   the hull's vertices, normals and faces as vrMesh arrays
- *   make_polyhedron  the hull of the definition (a sphere's: its drawing mesh)
+ *   make_shape   the hull of the definition (a sphere's: its drawing mesh),
+ *                shared by the objects of one shape (shape_share.h)
  */
 #include <stdlib.h>
 #include <string.h>
 #include "build.h"
 #include "off.h"
-#include "primitives.h"
+#include "shape_share.h"
 #include "saved.h"
 #include "config.h"
 
@@ -33,47 +33,28 @@ int vrObjectDef_MassChanged(const vrObjectDef *a, const vrObjectDef *b)
     return vrObjectDef_Mass(a) != vrObjectDef_Mass(b) || a->elasticity != b->elasticity || a->friction != b->friction;
 }
 
-static int copy_draw_mesh(vrObject *o)
-{
-    const vrPolyhedron *p = o->poly;
-    int i, nfv = p->face_start[p->nf];
-    o->draw_verts = malloc((size_t)p->nv * 3 * sizeof(double));
-    o->draw_normals = malloc((size_t)p->nv * 3 * sizeof(double));
-    o->draw_face_start = malloc((size_t)(p->nf + 1) * sizeof(int));
-    o->draw_face_verts = malloc((size_t)nfv * sizeof(int));
-    if (!o->draw_verts || !o->draw_normals || !o->draw_face_start || !o->draw_face_verts) return -1;
-    for (i = 0; i < p->nv; i++) {
-        o->draw_verts[3 * i] = p->vert[i].x;
-        o->draw_verts[3 * i + 1] = p->vert[i].y;
-        o->draw_verts[3 * i + 2] = p->vert[i].z;
-        o->draw_normals[3 * i] = p->vert_normal[i].x;
-        o->draw_normals[3 * i + 1] = p->vert_normal[i].y;
-        o->draw_normals[3 * i + 2] = p->vert_normal[i].z;
-    }
-    memcpy(o->draw_face_start, p->face_start, (size_t)(p->nf + 1) * sizeof(int));
-    memcpy(o->draw_face_verts, p->face_vert, (size_t)nfv * sizeof(int));
-    return 0;
-}
-
-static int make_polyhedron(vrObject *o, char *err, size_t n)
+/* the object's shape: shared by every object of the same shape
+ * (shape_share.h), an OFF polyhedron its own */
+static int make_shape(vrObject *o, char *err, size_t n)
 {
     const vrObjectDef *d = &o->def;
-    switch (d->type) {
-    case VR_SPHERE:
-        return vrPolyhedron_Sphere(d->radius, d->ures, d->vres, &o->poly, err, n);
-    case VR_CUBE:
-        return vrPolyhedron_Cube(vrVec3_Of(d->size), &o->poly, err, n);
-    case VR_SUPERQUADRIC:
-        return vrPolyhedron_Superquadric(d->exp1, d->exp2, vec3_make(d->a1, d->a2, d->a3), d->ures, d->vres,
-                                         &o->poly, err, n);
-    default:
-        if (!o->off && !o->poly) return vrGeom_Fail(err, n, "polyhedron '%s' has no file (file = path.off)", o->name);
-        if (o->off) {
-            o->poly = o->off;
-            o->off = NULL;
-        }
-        return 0;
+    vrSharedShape *s;
+    if (d->type != VR_POLYHEDRON) {
+        s = vrShape_Share(d, err, n);
+    } else {
+        if (!o->off) return vrGeom_Fail(err, n, "polyhedron '%s' has no file (file = path.off)", o->name);
+        s = vrShape_Own(o->off);
+        o->off = NULL;
+        if (!s) vrGeom_Fail(err, n, "out of memory");
     }
+    if (!s) return -1;
+    o->shape = s;
+    o->poly = s->poly;
+    o->draw_verts = s->draw_verts;
+    o->draw_normals = s->draw_normals;
+    o->draw_face_start = s->draw_face_start;
+    o->draw_face_verts = s->draw_face_verts;
+    return 0;
 }
 
 int vrObject_Build(vrObject *o, char *err, size_t n)
@@ -84,8 +65,7 @@ int vrObject_Build(vrObject *o, char *err, size_t n)
     mat33 unit;
     double rin, rout;
     if (d->type != VR_POLYHEDRON || o->off) vrObject_FreeShape(o);
-    if (!o->poly && make_polyhedron(o, err, n) != 0) return -1;
-    if (!o->draw_verts && copy_draw_mesh(o) != 0) return vrGeom_Fail(err, n, "out of memory");
+    if (!o->shape && make_shape(o, err, n) != 0) return -1;
     memset(sh, 0, sizeof *sh);
     if (d->type == VR_SPHERE) {
         double i = 0.4 * d->radius * d->radius;     /* a solid sphere: 2/5 m r^2 */

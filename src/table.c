@@ -12,6 +12,7 @@
 #include "table.h"
 #include "off.h"
 #include "config.h"
+#include "shape_share.h"
 
 vrObject *vrTable_Get(const vrTable *t, int id)
 {
@@ -234,11 +235,8 @@ int vrObject_SetDef(vrObject *o, const vrObjectDef *def, vrObjectDef *old, char 
 
 void vrObject_FreeShape(vrObject *o)
 {
-    vrPolyhedron_Free(o->poly);
-    free(o->draw_verts);
-    free(o->draw_normals);
-    free(o->draw_face_start);
-    free(o->draw_face_verts);
+    vrShape_Release(o->shape);
+    o->shape = NULL;
     o->poly = NULL;
     o->draw_verts = o->draw_normals = NULL;
     o->draw_face_start = o->draw_face_verts = NULL;
