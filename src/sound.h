@@ -16,8 +16,12 @@ typedef struct vrSoundLast { long long order; double t; } vrSoundLast;
 typedef struct vrSounds {
     vrSoundEvent *ev;        /* this frame's */
     int n, cap;
-    vrSoundLast *last;       /* pairs that sounded within the refractory time */
+    vrSoundLast *last;       /* pairs that sounded, in the order they did: those within the
+                                refractory time, and some past it (dropped in batches) */
     int nlast, lastcap;
+    vrSoundLast *latest;     /* each pair's latest sound, hashed by pair order (open
+                                addressing, order -1: empty): whether it is quiet, in O(1) */
+    int nlatest, latestcap;
 } vrSounds;
 
 /* an impulse event ev (serial owner: with its point and approach): a

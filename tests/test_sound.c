@@ -4,12 +4,16 @@
  * the ball rests, one per pair per 0.1 s; and tools' vroc-sound renders a
  * log into a WAV whose sounds start at the events' samples. */
 #include <stdlib.h>
+#include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include "test.h"
 #include "vroc.h"
 #include "vec.h"
 #include "scene.h"
+#include "sound.h"
+#define TEST_LCG_SEED 8080
+#include "test_lcg.h"
 
 static double contact_gap(double d) { return d < 1e-3 ? d : 1e-3; }
 
@@ -96,6 +100,52 @@ static int test_one_sound_per_pair_per_tenth_of_a_second(void)
     for (k = 1; k < n; k++) ENSURE_NEAR(ev[k].t - ev[k - 1].t, 2 * period, 1e-9);
     ENSURE(vrScene_Stats(w).collisions >= 2 * n - 1);
     vrWorld_Destroy(w);
+    return 0;
+}
+
+/* the refractory rule as it reads (sound.h), by a look at every earlier
+ * sound: did pair `order` sound within VR_SOUND_REFRACTORY before t? */
+static int sounded_within(const long long *order, const double *t, int n, long long pair, double at)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (order[i] == pair && at - t[i] < VR_SOUND_REFRACTORY) return 1;
+    return 0;
+}
+
+/* 20,000 impacts of 2,500 pairs, some 1,000 in any 0.1 s (the peers' 1,000
+ * room's rate), against the rule read by a look at every sound before:
+ * the same sounds, one for one, through the batches in which sound.c
+ * drops the pairs past their refractory time and remakes its table */
+static int test_refractory_time_at_a_thousand_impacts_a_tenth(void)
+{
+    static long long order[20000];
+    static double when[20000];
+    vrSettings set = vrSettings_Default();
+    vrSounds s;
+    int k, n = 0, kept = 0;
+    double t = 0;
+    memset(&s, 0, sizeof s);
+    for (k = 0; k < 20000; k++) {
+        vrEvent ev;
+        int want;
+        memset(&ev, 0, sizeof ev);
+        t += 2e-4 * uni();
+        ev.kind = VR_EV_IMPACT;
+        ev.t = t;
+        ev.a = (int)(50 * uni());
+        ev.b = ev.a + 1 + (int)(50 * uni());
+        ev.order = (long long)ev.a << 32 | ev.b;
+        ev.approach = -1;
+        want = !sounded_within(order, when, n, ev.order, t);
+        ENSURE(vrSounds_Note(&s, &ev, &set) == 0);
+        ENSURE_MSG(s.n == kept + want, "impact %d at %g: %s", k, t, want ? "no sound" : "a sound in the refractory time");
+        kept = s.n;
+        if (want) order[n] = ev.order, when[n++] = t;
+    }
+    printf("    %d sounds of 20000 impacts\n", n);
+    ENSURE(n > 10000 && n < 19900);   /* both rules at work */
+    vrSounds_Free(&s);
     return 0;
 }
 
@@ -201,6 +251,7 @@ static const vrTest tests[] = {
     TEST(test_sound_events_come_at_the_analytic_bounce_times),
     TEST(test_fast_impact_sounds_at_collision_vol),
     TEST(test_one_sound_per_pair_per_tenth_of_a_second),
+    TEST(test_refractory_time_at_a_thousand_impacts_a_tenth),
     TEST(test_vroc_sound_renders_events_at_their_samples),
 };
 
