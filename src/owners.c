@@ -59,12 +59,19 @@ int vrOwners_AddObject(vrWorld *w, int id)
     return w->owner ? vrOwner_AddBody(w->owner, id, &w->table.obj[id]->body) : 0;
 }
 
+void vrOwners_Renew(vrWorld *w)
+{
+    int warm = w->warm.structure == w->structure;
+    w->structure++;
+    if (warm) w->warm.structure = w->structure;
+}
+
 int vrOwners_Choose(vrWorld *w, char *err, size_t n)
 {
     if (w->s.gps > 0) {
         if (w->owner) {
             retire_owner(w);
-            w->structure++;
+            vrOwners_Renew(w);
         }
         return vrSgp_Sync(w, err, n);
     }

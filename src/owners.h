@@ -16,6 +16,11 @@ void vrOwners_Retire(vrWorld *w);
 const vrOwnerSet *vrOwners_Of(const vrWorld *w);
 /* a new object's body and its pairs join the serial owner, if there is one */
 int vrOwners_AddObject(vrWorld *w, int id);
+/* the owners are to be made anew (a change of gps, heap, broadphase:
+ * structure moves on, which sets the workers up again) while the physics
+ * stays as it was: the contacts' warm starts stand, as in a run that made
+ * no such change (serial = workers = heap off to the bit through switches) */
+void vrOwners_Renew(vrWorld *w);
 /* applies an update: wakes what rests on changed bodies, re-anchors, tells the owners */
 int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up);
 

@@ -73,7 +73,8 @@ static int apply_params(vrWorld *w)
     for (i = 0; motion && i < w->ndyn; i++)       /* each body once */
         if (!vrUpdate_Append(&w->update, w->dyn[i], w->t)) return -1;
     w->params_dirty = 0;
-    w->structure++;                                  /* workers are made anew with them */
+    if (motion) w->structure++;                      /* workers are made anew with them */
+    else vrOwners_Renew(w);                          /* heap, broadphase: the same physics */
     return vrWorld_ApplyUpdate(w, &w->update);
 }
 
