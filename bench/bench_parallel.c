@@ -9,7 +9,9 @@
  * over udpm, each run in a fresh child, the median of RUNS: frames/s,
  * rounds a frame by kind, messages a frame, the SGP's waiting and the
  * workers' busy time a frame.  `bench_parallel rooms [N [FRAMES [RUNS]]]`
- * runs that table alone.
+ * runs that table alone.  `heavy` — 64 superquadrics of RES x RES points
+ * (heavy looks, few events), the same columns: `bench_parallel heavy [RES
+ * [FRAMES [RUNS]]]` alone.
  *
  * This machine has 2 cores: more workers than cores only adds messages.
  * The figures say how the protocol costs, not how Pixel-Planes 5 scaled. */
@@ -209,27 +211,70 @@ typedef struct Room {
     long long messages, collisions;
 } Room;
 
+/* A heavy room: 64 superquadrics of res x res points (exponents 0.6,
+ * radii 0.3 to 0.4 m) on a 4 x 4 x 4 lattice in a 10 m room of six static
+ * walls, flying at up to 3 m/s and turning at up to 2 rad/s, no gravity,
+ * e = 1.  Each look at a pair walks and bounds hulls of res^2 vertices. */
+static int heavy_room(vrWorld *w, int res, char *err, size_t n)
+{
+    static const double wall[6][6] = {{5.5, 5.5, 0.25, 0, 0, -0.25}, {5.5, 5.5, 0.25, 0, 0, 10.25},
+                                      {0.25, 5.5, 5.5, -5.25, 0, 5}, {0.25, 5.5, 5.5, 5.25, 0, 5},
+                                      {5.5, 0.25, 5.5, 0, -5.25, 5}, {5.5, 0.25, 5.5, 0, 5.25, 5}};
+    unsigned long long seed = 7;
+    int k;
+    for (k = 0; k < 6 + 64; k++) {
+        vrObjectDef d = vrObjectDef_Default(k < 6 ? VR_CUBE : VR_SUPERQUADRIC);
+        vrObjectId id;
+        char name[16];
+        int j, q = k - 6;
+        snprintf(name, sizeof name, k < 6 ? "wall%d" : "q%d", k < 6 ? k : q);
+        d.elasticity = 1;
+        if (k < 6) {
+            for (j = 0; j < 3; j++) d.size[j] = wall[k][j], d.translate[j] = wall[k][3 + j];
+            d.mass = -1, d.mass_set = 1;
+        } else {
+            d.ures = d.vres = res;
+            d.exp1 = d.exp2 = 0.6;
+            d.a1 = 0.4, d.a2 = 0.3, d.a3 = 0.35;
+            d.mass = 1, d.mass_set = 1;
+            d.translate[0] = -3.6 + 2.4 * (q / 16), d.translate[1] = -3.6 + 2.4 * (q / 4 % 4);
+            d.translate[2] = 1.5 + 2.4 * (q % 4);
+            for (j = 0; j < 3; j++) {
+                seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+                d.linear_vel[j] = 6.0 * (double)(seed >> 11) / 9007199254740992.0 - 3;
+                seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+                d.angular_vel[j] = 4.0 * (double)(seed >> 11) / 9007199254740992.0 - 2;
+            }
+        }
+        if (vrWorld_CreateObject(w, name, d.type, &id, err, n) != 0 || vrWorld_SetObjectDef(w, id, &d, err, n) != 0)
+            return -1;
+    }
+    return 0;
+}
+
 /* in this (child) process: the room built and started (the workers set
- * up), one frame to warm, then frames frames counted */
-static Room room_run(int n, int gps, long frames)
+ * up), one frame to warm, then frames frames counted; res > 0: the heavy
+ * room of superquadrics of res x res points instead of n random objects */
+static Room room_run(int n, int res, int gps, long frames)
 {
     vrWorld *w = vrWorld_Create();
     vrSettings s = *vrWorld_Settings(w);
     vrStats a, b;
     Room r;
     char err[256] = "";
-    int i;
+    int i, failed;
     memset(&r, 0, sizeof r);
-    s.room = 22.1 * cbrt(n / 500.0);   /* SPEC 10's density: 10,000 in 60 m */
+    s.room = res > 0 ? 0 : 22.1 * cbrt(n / 500.0);   /* SPEC 10's density: 10,000 in 60 m */
     s.seed = 1993;
     s.collision_dist = 0.01;
-    s.time_step = 0.05;
+    s.time_step = res > 0 ? 0.1 : 0.05;
     s.max_linear = 1000;
     s.max_angular = 10000;
     s.gps = gps;
     snprintf(s.lcm_url, sizeof s.lcm_url, "%s", UDPM);
-    if (vrWorld_SetSettings(w, &s, err, sizeof err) != 0 || vrWorld_AddRandom(w, n, err, sizeof err) != 0
-        || vrWorld_Step(w, 1, err, sizeof err) != 0) {
+    failed = vrWorld_SetSettings(w, &s, err, sizeof err) != 0;
+    if (!failed) failed = res > 0 ? heavy_room(w, res, err, sizeof err) != 0 : vrWorld_AddRandom(w, n, err, sizeof err) != 0;
+    if (failed || vrWorld_Step(w, 1, err, sizeof err) != 0) {
         fprintf(stderr, "bench_parallel: room of %d, gps %d: %s\n", n, gps, err);
         vrWorld_Destroy(w);
         return r;
@@ -249,17 +294,17 @@ static Room room_run(int n, int gps, long frames)
     return r;
 }
 
-typedef struct RoomArgs { int n, gps; long frames; } RoomArgs;
+typedef struct RoomArgs { int n, res, gps; long frames; } RoomArgs;
 
 static void room_child(const void *ctx, void *out)
 {
     const RoomArgs *a = ctx;
-    *(Room *)out = room_run(a->n, a->gps, a->frames);
+    *(Room *)out = room_run(a->n, a->res, a->gps, a->frames);
 }
 
-static Room room_in_child(int n, int gps, long frames)
+static Room room_in_child(int n, int res, int gps, long frames)
 {
-    RoomArgs a = {n, gps, frames};
+    RoomArgs a = {n, res, gps, frames};
     Room r;
     bench_in_child(room_child, &a, &r, sizeof r);
     return r;
@@ -304,7 +349,7 @@ static void rooms_table(int n, long frames, int runs)
         for (g = 0; g < 4; g++) {
             if (ahead[g]) unsetenv("VROC_THESIS_ROUNDS");
             else setenv("VROC_THESIS_ROUNDS", "1", 1);
-            r[g][i] = room_in_child(n, gps[g], frames);
+            r[g][i] = room_in_child(n, 0, gps[g], frames);
         }
     unsetenv("VROC_THESIS_ROUNDS");
     for (g = 0; g < 4; g++) qsort(r[g], (size_t)runs, sizeof r[g][0], by_room_fps);
@@ -318,13 +363,40 @@ static void rooms_table(int n, long frames, int runs)
     }
 }
 
-static void rooms_header(long frames, int runs)
+static void columns(void)
 {
-    printf("\nSPEC 10 rooms over udpm, no gravity, %ld frames of 0.05 s after one, median of %d interleaved runs\n"
-           "rounds a frame: all, frame starts, events, advances, island steps; ms a frame: the frame, the SGP's\n"
-           "waits, the workers' work (summed); 2t: gps = 2 with the thesis's rounds (VROC_THESIS_ROUNDS=1)\n", frames, runs);
+    printf("rounds a frame: all, frame starts, events, advances, island steps; ms a frame: the frame, the SGP's\n"
+           "waits, the workers' work (summed); 2t: gps = 2 with the thesis's rounds (VROC_THESIS_ROUNDS=1)\n");
     printf("%6s %4s %9s %6s %8s %6s %6s %6s %6s %8s %8s %8s %8s\n", "objs", "gps", "frames/s", "vs 0", "rounds",
            "start", "event", "adv", "island", "msgs", "ms", "wait", "busy");
+}
+
+/* the heavy room: serial, gps = 1 and 2, interleaved, medians */
+static void heavy_table(int res, long frames, int runs)
+{
+    static const int gps[] = {0, 1, 2};
+    Room r[3][ROOM_RUNS_MAX];
+    int i, g;
+    if (runs > ROOM_RUNS_MAX) runs = ROOM_RUNS_MAX;
+    printf("\nheavy frames: 64 superquadrics of %d x %d points flying in a 10 m room, no gravity, %ld frames of\n"
+           "0.1 s (24 contact steps each) after one, over udpm, median of %d interleaved runs\n",
+           res, res, frames, runs);
+    columns();
+    for (i = 0; i < runs; i++)
+        for (g = 0; g < 3; g++) r[g][i] = room_in_child(64, res, gps[g], frames);
+    for (g = 0; g < 3; g++) qsort(r[g], (size_t)runs, sizeof r[g][0], by_room_fps);
+    for (g = 0; g < 3; g++) {
+        const Room *m = &r[g][runs / 2];
+        if (!m->ok) printf("%6d %4d   (failed)\n", 64, gps[g]);
+        else print_room(64, gps[g], 1, m, room_fps(&r[0][runs / 2]));
+    }
+}
+
+static void rooms_header(long frames, int runs)
+{
+    printf("\nSPEC 10 rooms over udpm, no gravity, %ld frames of 0.05 s after one, median of %d interleaved runs\n",
+           frames, runs);
+    columns();
 }
 
 int main(int argc, char **argv)
@@ -340,6 +412,10 @@ int main(int argc, char **argv)
         int runs = argc > 4 ? atoi(argv[4]) : 5;
         rooms_header(frames, runs);
         rooms_table(argc > 2 ? atoi(argv[2]) : 1000, frames, runs);
+        return 0;
+    }
+    if (argc > 1 && strcmp(argv[1], "heavy") == 0) {
+        heavy_table(argc > 2 ? atoi(argv[2]) : 150, argc > 3 ? atol(argv[3]) : 10, argc > 4 ? atoi(argv[4]) : 3);
         return 0;
     }
     snprintf(vroc, sizeof vroc, "%s/vroc", build);
@@ -364,5 +440,6 @@ int main(int argc, char **argv)
     }
     rooms_header(20, 5);
     for (n = 500; n <= 1000; n += 500) rooms_table(n, 20, 5);
+    heavy_table(150, 10, 3);
     return 0;
 }
