@@ -611,7 +611,7 @@ static void settling_pyramid(vrWorld *w)
     vrWorld_SetSettings(w, &s, NULL, 0);
     vrScene_Box(w, "floor", vec3_make(2, 2, 0.1), vec3_make(0, 0, -0.1), -1, 0.5);
     for (k = 0; k < 6; k++) {
-        char name[8];
+        char name[16];
         snprintf(name, sizeof name, "b%d", k);
         vrScene_Box(w, name, vec3_make(0.1, 0.1, 0.1), vec3_make(x[k], 0.01 * k, z[k]), 1 + k, 0.1);
     }
