@@ -115,7 +115,7 @@ static int grow_table(void)
     int n = nbuckets ? 2 * nbuckets : 64, i;
     vrSharedShape **b;
     if (nshared + 1 <= nbuckets) return 0;
-    if (!(b = calloc((size_t)n, sizeof *b))) return -1;
+    if (!(b = calloc((size_t)n, sizeof(vrSharedShape *)))) return -1;   /* the buckets are pointers */
     for (i = 0; i < nbuckets; i++)
         while (bucket[i]) {
             vrSharedShape *s = bucket[i];
