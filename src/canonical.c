@@ -340,6 +340,16 @@ static double support_height(const vrPosed *b, vec3 u, int v)
     return vec3_dot(u, vrPosed_Vertex(b, vrPolyhedron_Climb(b->p, mat33_tmulv(&b->pose->R, u), v, NULL)));
 }
 
+double vrGap_AlongFrom(vrGap *g, vec3 u)
+{
+    vec3 nu = vec3_neg(u);
+    double low_b;
+    g->va = vrPolyhedron_Climb(g->a->p, mat33_tmulv(&g->a->pose->R, u), g->va, NULL);
+    if (g->b) g->vb = vrPolyhedron_Climb(g->b->p, mat33_tmulv(&g->b->pose->R, nu), g->vb, NULL);
+    low_b = g->b ? -vec3_dot(nu, vrPosed_Vertex(g->b, g->vb)) : vec3_dot(u, g->c);
+    return low_b - vec3_dot(u, vrPosed_Vertex(g->a, g->va));
+}
+
 double vrGap_Along(const vrGap *g, vec3 u)
 {
     double low_b = g->b ? -support_height(g->b, vec3_neg(u), g->vb) : vec3_dot(u, g->c);

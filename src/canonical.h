@@ -65,6 +65,10 @@ static inline vec3 vrUnitOrUp(vec3 v)
 typedef struct vrGap { const vrPosed *a, *b; vec3 c; int va, vb; } vrGap;
 
 double vrGap_Along(const vrGap *g, vec3 u);
+/* vrGap_Along, with g's vertices moved to the tops its climbs reached:
+ * the next direction nearby starts there (a fine superquadric's climbs
+ * from the walk's vertices to each of its faces' normals are long) */
+double vrGap_AlongFrom(vrGap *g, vec3 u);
 /* The direction of separation at the walk's final features fa, fb (fb
  * unused for a point), its closest points ca, cb and distance dw. */
 vec3 vrGap_WalkDirection(const vrGap *g, vrFeature fa, vrFeature fb, vec3 ca, vec3 cb, double dw);

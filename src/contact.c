@@ -106,6 +106,7 @@ static vec3 face_axis(const vrGap *g, int side, int f)
 static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
 {
     vrFaceBound fb[2];
+    vrGap warm = *g;   /* its climbs start where the last one ended */
     vec3 best = vec3_zero();
     double floor_gap, top_gap, top = -HUGE_VAL, kept[KEPT_BOUNDS];
     int side, f, k, top_side = 0, top_f = 0;
@@ -119,7 +120,7 @@ static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
             if (ub > top) top = ub, top_side = side, top_f = f;
         }
     }
-    top_gap = vrGap_Along(g, face_axis(g, top_side, top_f));
+    top_gap = vrGap_AlongFrom(&warm, face_axis(g, top_side, top_f));
     floor_gap = top_gap - BOUND_SLACK;
     *gap = -HUGE_VAL;
     for (side = 0, k = 0; side < 2; side++) {
@@ -130,7 +131,7 @@ static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
             /* NOLINTNEXTLINE(clang-analyzer-core.UndefinedBinaryOperatorResult): the first pass wrote kept[k], the same faces in the same order */
             if ((k < KEPT_BOUNDS ? kept[k] : gap_bound(&fb[side], p, f)) < floor_gap) continue;
             u = face_axis(g, side, f);
-            h = side == top_side && f == top_f ? top_gap : vrGap_Along(g, u);   /* measured once */
+            h = side == top_side && f == top_f ? top_gap : vrGap_AlongFrom(&warm, u);   /* measured once */
             if (h > *gap) *gap = h, best = u;
         }
     }
