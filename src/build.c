@@ -49,11 +49,6 @@ static int make_shape(vrObject *o, char *err, size_t n)
     }
     if (!s) return -1;
     o->shape = s;
-    o->poly = s->poly;
-    o->draw_verts = s->draw_verts;
-    o->draw_normals = s->draw_normals;
-    o->draw_face_start = s->draw_face_start;
-    o->draw_face_verts = s->draw_face_verts;
     return 0;
 }
 
@@ -76,10 +71,10 @@ int vrObject_Build(vrObject *o, char *err, size_t n)
     } else {
         sh->kind = d->type == VR_CUBE ? VR_SHAPE_BOX : VR_SHAPE_POLY;
         sh->half = vrVec3_Of(d->size);
-        sh->poly = o->poly;
-        unit = o->poly->inertia_unit;
-        rin = o->poly->r_in;
-        rout = o->poly->r_out;
+        sh->poly = o->shape->poly;
+        unit = sh->poly->inertia_unit;
+        rin = sh->poly->r_in;
+        rout = sh->poly->r_out;
     }
     sh->serial = ++shapes_made;
     vrBody_SetMassProperties(&o->body, vrObjectDef_Mass(d), &unit, rin, rout);

@@ -8,6 +8,7 @@
 #include <string.h>
 #include "build.h"
 #include "config.h"
+#include "shape_share.h"
 #include "world_state.h"
 #include "parallel/sgp.h"
 
@@ -59,12 +60,12 @@ int vrWorld_GetMesh(vrWorld *w, vrObjectId id, vrMesh *m)
 {
     vrObject *o = vrWorld_Object(w, id);
     if (!o || ready(w, o) != 0) return -1;
-    m->nverts = o->poly->nv;
-    m->verts = o->draw_verts;
-    m->normals = o->draw_normals;
-    m->nfaces = o->poly->nf;
-    m->face_start = o->draw_face_start;
-    m->face_verts = o->draw_face_verts;
+    m->nverts = o->shape->poly->nv;
+    m->verts = o->shape->draw_verts;
+    m->normals = o->shape->draw_normals;
+    m->nfaces = o->shape->poly->nf;
+    m->face_start = o->shape->draw_face_start;
+    m->face_verts = o->shape->draw_face_verts;
     m->smooth = o->def.type == VR_SPHERE || o->def.type == VR_SUPERQUADRIC;
     return 0;
 }

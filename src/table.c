@@ -237,9 +237,6 @@ void vrObject_FreeShape(vrObject *o)
 {
     vrShape_Release(o->shape);
     o->shape = NULL;
-    o->poly = NULL;
-    o->draw_verts = o->draw_normals = NULL;
-    o->draw_face_start = o->draw_face_verts = NULL;
 }
 
 void vrObject_Free(vrObject *o)

@@ -16,12 +16,10 @@ typedef struct vrObject {
     int alive;
     int built;               /* shape and mass made from def */
     int live;                /* in the simulation: edits now act on its motion */
-    struct vrSharedShape *shape;   /* poly and draw_*'s owner, shared by objects of one shape (shape_share.h) */
-    vrPolyhedron *poly;      /* hull (cube, superquadric, OFF) or the sphere's drawing mesh */
+    struct vrSharedShape *shape;   /* its hull (a sphere's: its drawing mesh) and drawing mesh, shared
+                                      by the objects of one shape (shape_share.h); NULL until built */
     vrPolyhedron *off;       /* OFF file loaded by vrObject_SetDef, waiting to be built */
     char *off_text;          /* that file's text, for workers to build the same polyhedron */
-    const double *draw_verts, *draw_normals;   /* the shape's mesh: read only */
-    const int *draw_face_start, *draw_face_verts;
     vrBody body;
     int overlap_owed;        /* added, or moved by an edit, since the last start that
                                 checked: its pairs are checked at the next (SPEC 1.4) */
