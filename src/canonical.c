@@ -22,7 +22,7 @@
  *   set_to_face, face_is_support
  *   face_against, edge_edge_normal,  the normal and distance by the kinds of
  *   point_features                   the two features
- *   support_height, try_faces,       separation along a direction; the
+ *   vrGap_AlongFrom, try_faces,      separation along a direction; the
  *   try_edges                        candidates for the walk's direction
  *
  * No static state; scratch memory lives on the stack unless a set outgrows
@@ -335,11 +335,6 @@ int vrCanon_Compute(const vrPosed *a, const vrPosed *b, vec3 dir, vrFeature fa, 
 
 /* ---- the walk's direction ----------------------------------------------------- */
 
-static double support_height(const vrPosed *b, vec3 u, int v)
-{
-    return vec3_dot(u, vrPosed_Vertex(b, vrPolyhedron_Climb(b->p, mat33_tmulv(&b->pose->R, u), v, NULL)));
-}
-
 double vrGap_AlongFrom(vrGap *g, vec3 u)
 {
     vec3 nu = vec3_neg(u);
@@ -352,8 +347,8 @@ double vrGap_AlongFrom(vrGap *g, vec3 u)
 
 double vrGap_Along(const vrGap *g, vec3 u)
 {
-    double low_b = g->b ? -support_height(g->b, vec3_neg(u), g->vb) : vec3_dot(u, g->c);
-    return low_b - support_height(g->a, u, g->va);
+    vrGap from = *g;   /* the climbs start at g's vertices, which stay */
+    return vrGap_AlongFrom(&from, u);
 }
 
 /* the normals (times sign) of the faces at feature f of x that separate
