@@ -183,9 +183,7 @@ vrSharedShape *vrShape_Share(const vrObjectDef *d, char *err, size_t n)
     }
     s->key = k;
     s->hash = h;
-    if (intern(s) != 0) {   /* unshared, it still serves its object */
-        s->interned = 0;
-    }
+    (void)intern(s);   /* out of memory: unshared, it still serves its object */
     return s;
 }
 

@@ -13,20 +13,8 @@
  */
 #include <stdlib.h>
 #include <string.h>
+#include "grow.h"
 #include "sound.h"
-
-static int grow(void **p, int *cap, int need, size_t size)
-{
-    int c = *cap ? *cap : 16;
-    void *m;
-    if (need <= *cap) return 0;
-    while (c < need) c *= 2;
-    m = realloc(*p, (size_t)c * size);
-    if (!m) return -1;
-    *p = m;
-    *cap = c;
-    return 0;
-}
 
 /* The pairs that sounded: `last` in the order they did (a save writes
  * them so), `latest` each pair's latest time by its order.  A pair is
@@ -101,7 +89,7 @@ int vrSounds_Note(vrSounds *s, const vrEvent *ev, const vrSettings *set)
     if (ev->kind != VR_EV_IMPACT && ev->kind != VR_EV_CONTACT) return 0;
     if (!(speed > set->sound_min_speed)) return 0;
     if (recent(s, ev->order, ev->t)) return 0;
-    if (grow((void **)&s->ev, &s->cap, s->n + 1, sizeof *s->ev) != 0 || vrSounds_Remember(s, ev->order, ev->t) != 0)
+    if (vrGrow((void **)&s->ev, &s->cap, s->n + 1, sizeof *s->ev) != 0 || vrSounds_Remember(s, ev->order, ev->t) != 0)
         return -1;
     e = &s->ev[s->n++];
     e->t = ev->t;
@@ -119,7 +107,7 @@ int vrSounds_Remember(vrSounds *s, long long order, double t)
         forget_quiet(s, t);
         if (remake_latest(s) != 0) return -1;
     }
-    if (grow((void **)&s->last, &s->lastcap, 2 * s->nlast + 1, sizeof *s->last) != 0) return -1;
+    if (vrGrow((void **)&s->last, &s->lastcap, 2 * s->nlast + 1, sizeof *s->last) != 0) return -1;
     s->last[s->nlast].order = order;
     s->last[s->nlast++].t = t;
     if (2 * (s->nlatest + 1) > s->latestcap) return remake_latest(s);

@@ -87,7 +87,6 @@ static int build_part(vrWorker *k, const vroc_setup_t *m, char *err, size_t n)
     }
     for (i = 0; i < m->nbodies; i++) {
         vrObject *o = vrTable_Get(&k->objects, m->defs[i].id);
-        vrWorker_Beat(k);   /* a fine superquadric's hull takes tens of ms */
         if (o && !o->built && vrObject_Ready(o, m->t, &k->params.flight, NULL, err, n) != 0) return -1;
     }
     return 0;
