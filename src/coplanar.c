@@ -20,6 +20,7 @@
 #include "grow.h"
 #include "orient.h"
 #include "polyhedron.h"
+#include "progress.h"
 
 /* ---- merging coplanar triangles into polygons ------------------------------
  * Flood fill from the largest triangle: a neighbour joins when its third
@@ -147,8 +148,10 @@ static int grow_group(Tris *t, const vec3 *p, int seed, double tolabs, int *queu
 static int group_triangles(Tris *t, const vec3 *p, const int *order, double tolabs, int *queue)
 {
     int k;
-    for (k = 0; k < t->n; k++)
+    for (k = 0; k < t->n; k++) {
+        vrProgress_Tick();          /* a fine superquadric's 700,000 triangles: a worker's heartbeat */
         if (t->group[order[k]] < 0 && grow_group(t, p, order[k], tolabs, queue) != 0) return -1;
+    }
     return 0;
 }
 
@@ -261,6 +264,7 @@ static int trace_new(Merge *m, int first_new, int *nbad)
         if (gi >= 0 && t->group[t->nb[i / 3][i % 3]] != gi + first_new && nb[gi]++ == 0) first[gi] = i;
     }
     for (g = first_new; rc == 0 && g < t->ngroup; g++) {
+        vrProgress_Tick();
         m->loop_of[g] = -1;
         m->bad[g] = 0;
         /* no boundary at all would be a group covering the whole (flat) hull */
@@ -315,6 +319,7 @@ static void check_loops(Merge *m, int first_new, int *nbad)
     for (f = 0; f < l->n; f++) {
         const Group *g = l->group[f] >= 0 ? &m->t->g[l->group[f]] : NULL;
         int s = l->start[f], k = l->start[f + 1] - s, touched = l->group[f] >= first_new;
+        vrProgress_Tick();
         if (!g || g->level == EXACT_LEVEL) continue;
         for (i = 0; i < k && !touched; i++) touched = m->dirty[l->vert[s + i]];
         if (touched && !loop_holds(m->p, l->vert + s, k, m->count, g->n, m->tolabs * level_scale[g->level])) {

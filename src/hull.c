@@ -62,6 +62,7 @@ static int make_polyhedron(const vec3 *pts, int n, vrLoops *l, const int *orig, 
     } else if (drop_flat_vertices(l, n, keep, &nv) != 0) {
         vrGeom_Fail(err, errlen, "a merged face lost its corners");
     } else {
+        vrProgress_Now();
         for (i = 0; i < n; i++)
             if (keep[i] >= 0) {
                 v[keep[i]] = pts[i];

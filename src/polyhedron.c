@@ -215,7 +215,9 @@ static int build_graph(vrPolyhedron *p, char *err, size_t errlen)
         return vrGeom_Fail(err, errlen, "out of memory");
     }
     bucket_by_tail(p, &he, nh);
+    vrProgress_Now();
     rc = match_twins(p, &he, nh, err, errlen);
+    vrProgress_Now();
     if (rc == 0) rc = order_vertex_edges(p, &he, err, errlen);
     if (rc == 0 && p->nv - p->ne + p->nf != 2)
         rc = vrGeom_Fail(err, errlen, "V - E + F = %d, not 2 (not a sphere-like surface)", p->nv - p->ne + p->nf);
