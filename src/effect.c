@@ -154,6 +154,30 @@ static void pay_for_lift(const vrResponding *o, const vrBody *b, vrBodyState *st
     pay_from_speed(b, st, pay_from_spin(b, st, lift));
 }
 
+/* A push-out moves positions, not velocities, so m x × v changes by
+ * sum m dx × v = mu D n × (v_b - v_a) where the two bodies share it (their
+ * momenta and centre of mass stay): a ball stuck to a tumbling box lost
+ * 1e-4 of its 5.73 of angular momentum to 18 push-outs (physics fuzzer
+ * seed 602).  The two spins take that much back, as one common change of
+ * turn rate dw = -(I_a + I_b)^-1 dL, the split that costs the least energy:
+ * a push-out keeps angular momentum as it keeps linear momentum. */
+static void keep_angular_momentum(vrBody *const b[2], vrBodyState *const st[2], const vec3 moved[2])
+{
+    mat33 inertia[2], sum;
+    vec3 lost = vec3_zero(), dw;
+    int s;
+    for (s = 0; s < 2; s++) {
+        vrPose pose = vrPose_make(st[s]->x, st[s]->q);
+        inertia[s] = vrBody_InertiaWorld(b[s], &pose);
+        lost = vec3_add(lost, vec3_scale(vec3_cross(moved[s], st[s]->v), b[s]->mass));
+    }
+    if (vec3_len2(lost) == 0) return;   /* at rest, or pushed along the relative velocity */
+    sum = mat33_add(&inertia[0], &inertia[1]);
+    sum = mat33_inverse(&sum);
+    dw = mat33_mulv(&sum, vec3_scale(lost, -1));
+    for (s = 0; s < 2; s++) st[s]->L = vec3_add(st[s]->L, mat33_mulv(&inertia[s], dw));
+}
+
 /* Interpenetrating bodies are pushed apart along the normal out of the
  * overlap, to VR_PUSHOUT_GAP apart, shared by inverse mass.  No further: a
  * 10 kg body pushed to half a 1 cm envelope gained 0.49 J; what the lift
@@ -169,6 +193,8 @@ static int respond_pushout(const vrResponding *o, const vrEvent *ev, vrUpdate *u
     vrBody *b[2] = {o->body[ev->a], o->body[ev->b]};
     double w0 = b[0]->kinematic ? 0 : b[0]->inv_mass, w1 = b[1]->kinematic ? 0 : b[1]->inv_mass;
     double total = ev->depth + VR_PUSHOUT_GAP, share[2], sign[2] = {-1, 1};
+    vrBodyState *st[2] = {NULL, NULL};
+    vec3 moved[2];
     int s;
     if (w0 + w1 == 0) w0 = b[0]->kinematic, w1 = b[1]->kinematic;   /* held against a static: it moves */
     if (w1 > 0 && b[0]->contact && !b[1]->contact) w0 = 0;
@@ -176,14 +202,16 @@ static int respond_pushout(const vrResponding *o, const vrEvent *ev, vrUpdate *u
     share[0] = w0 / (w0 + w1);
     share[1] = w1 / (w0 + w1);
     for (s = 0; s < 2; s++) {
-        vrBodyState *st;
         if (b[s]->is_static || (b[s]->kinematic && share[s] == 0)) continue;
-        st = vrUpdate_Body(up, b[s], ev->t);
-        if (!st) return -1;
-        st->x = vec3_madd(st->x, sign[s] * share[s] * total, ev->n);
-        pay_for_lift(o, b[s], st, vec3_scale(ev->n, sign[s]), share[s] * total);
-        st->resting = 0;
+        if (!(st[s] = vrUpdate_Body(up, b[s], ev->t))) return -1;
+        moved[s] = vec3_scale(ev->n, sign[s] * share[s] * total);
+        st[s]->x = vec3_add(st[s]->x, moved[s]);
+        pay_for_lift(o, b[s], st[s], vec3_scale(ev->n, sign[s]), share[s] * total);
+        st[s]->resting = 0;
     }
+    /* shared between two free bodies: nothing outside the pair acts */
+    if (share[0] > 0 && share[1] > 0 && !b[0]->kinematic && !b[1]->kinematic && st[0] && st[1])
+        keep_angular_momentum(b, st, moved);
     return 0;
 }
 

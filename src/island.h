@@ -58,6 +58,7 @@ typedef struct vrIslandContact {
     int npoints;              /* 1..VR_ISLAND_POINTS */
     vec3 p[VR_ISLAND_POINTS];           /* world points */
     double floor[VR_ISLAND_POINTS];     /* lowest relative normal velocity allowed */
+    double e;                 /* restitution of a contact whose floors bounce (Poisson's, when Newton's gains) */
     int warm;                 /* in: 1 when lambda, friction and twist hold a guess to start from */
     double lambda[VR_ISLAND_POINTS];    /* out: normal impulses on b (on a: minus) */
     vec3 friction;            /* out: tangential impulse on b at the points' centroid */
@@ -83,9 +84,10 @@ typedef struct vrIslandScratch {
     struct vrLcpFactor *lcp;
     double *m;
     int *pass;
-    vrIslandBody *before;
+    vrIslandBody *before, *bounceless;
     mat33 *inertia;
-    int ptcap, patchcap, lcpcap, mcap, passcap, beforecap, inertiacap;
+    int *bounced;
+    int ptcap, patchcap, lcpcap, mcap, passcap, beforecap, inertiacap, bouncelesscap, bouncedcap;
 } vrIslandScratch;
 void vrIslandScratch_Free(vrIslandScratch *x);
 

@@ -146,6 +146,7 @@ static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrI
     double e = fmin(w->table.obj[k->a]->body.elasticity, w->table.obj[k->b]->body.elasticity);
     double lift = vec3_dot(c->n, vec3_sub(B->dynamic ? gh : vec3_zero(), A->dynamic ? gh : vec3_zero()));
     int i;
+    c->e = e;
     for (i = 0; i < c->npoints; i++) {
         vec3 ua = vec3_add(A->v, vec3_cross(A->w, vec3_sub(c->p[i], A->x)));
         vec3 ub = vec3_add(B->v, vec3_cross(B->w, vec3_sub(c->p[i], B->x)));
