@@ -16,7 +16,6 @@
  *   otherwise the closest points of the two features.
  * The contact region (region.c) is built from the same features.  (Left to
  * chance: a set member within rounding of the 1e-9 m threshold.)
- *   set_has, set_add, set_sort       small sets of vertex indices
  *   support_set                      the near-support set
  *   edge_between, face_of_set,       the feature a set is
  *   set_to_face, face_is_support
@@ -38,71 +37,6 @@
 #define SUPPORT_TOL 1e-9   /* tau: near-support set tolerance (m) */
 #define PARALLEL_SIN2 1e-12
 
-/* ---- small sets of vertex indices ------------------------------------- */
-
-void vrIntSet_Init(vrIntSet *s)
-{
-    s->n = 0;
-    s->cap = (int)(sizeof s->buf / sizeof s->buf[0]);
-    s->v = s->buf;
-}
-
-void vrIntSet_Free(vrIntSet *s)
-{
-    if (s->v != s->buf) free(s->v);
-    vrIntSet_Init(s);
-}
-
-static int set_has(const vrIntSet *s, int x)
-{
-    int i;
-    for (i = 0; i < s->n; i++)
-        if (s->v[i] == x) return 1;
-    return 0;
-}
-
-static int set_add(vrIntSet *s, int x)
-{
-    if (s->n == s->cap) {
-        int *v = malloc(2 * (size_t)s->cap * sizeof *v);
-        if (!v) return -1;
-        memcpy(v, s->v, (size_t)s->n * sizeof *v);
-        if (s->v != s->buf) free(s->v);
-        s->v = v;
-        s->cap *= 2;
-    }
-    s->v[s->n++] = x;
-    return 0;
-}
-
-static void set_sort(vrIntSet *s)
-{
-    int i, j;
-    for (i = 1; i < s->n; i++) {
-        int x = s->v[i];
-        for (j = i; j > 0 && s->v[j - 1] > x; j--) s->v[j] = s->v[j - 1];
-        s->v[j] = x;
-    }
-}
-
-/* ---- a posed polyhedron's near-support set ---------------------------------- */
-
-/* Breadth-first search from `seed` over the vertices with d.v >= floor (body
- * frame).  On a convex polytope this set is connected whenever it holds the
- * top vertex: every other vertex has a higher neighbour. */
-int vrIntSet_Collect(const vrPolyhedron *p, vec3 d, int seed, double floor, vrIntSet *out)
-{
-    int i, k;
-    if (set_add(out, seed)) return -1;
-    for (i = 0; i < out->n; i++) {
-        int v = out->v[i];
-        for (k = p->vert_edge_start[v]; k < p->vert_edge_start[v + 1]; k++) {
-            int w = vrPolyhedron_OtherEnd(p, p->vert_edge[k], v);
-            if (vec3_dot(d, p->vert[w]) >= floor && !set_has(out, w) && set_add(out, w)) return -1;
-        }
-    }
-    return 0;
-}
 
 /* The near-support set of b in world direction dir: the vertices within
  * SUPPORT_TOL of the highest, ascending.  The filter after the search makes
@@ -112,7 +46,7 @@ static int support_set(const vrPosed *b, vec3 dir, int start, vrIntSet *out)
     vec3 d = mat33_tmulv(&b->pose->R, dir);
     double top, gap;
     int v = vrPolyhedron_Climb(b->p, d, start, &gap), i, n = 0;
-    if (gap > SUPPORT_TOL) return set_add(out, v); /* a lone top vertex: the common case */
+    if (gap > SUPPORT_TOL) return vrIntSet_Add(out, v); /* a lone top vertex: the common case */
     if (vrIntSet_Collect(b->p, d, v, vec3_dot(d, b->p->vert[v]) - SUPPORT_TOL, out)) return -1;
     top = vec3_dot(d, b->p->vert[out->v[0]]);
     for (i = 1; i < out->n; i++)
@@ -120,7 +54,7 @@ static int support_set(const vrPosed *b, vec3 dir, int start, vrIntSet *out)
     for (i = 0; i < out->n; i++)
         if (vec3_dot(d, b->p->vert[out->v[i]]) >= top - SUPPORT_TOL) out->v[n++] = out->v[i];
     out->n = n;
-    set_sort(out);
+    vrIntSet_Sort(out);
     return 0;
 }
 
@@ -138,7 +72,7 @@ static int face_within(const vrPolyhedron *p, int f, const vrIntSet *s)
 {
     int k;
     for (k = p->face_start[f]; k < p->face_start[f + 1]; k++)
-        if (!set_has(s, p->face_vert[k])) return 0;
+        if (!vrIntSet_Has(s, p->face_vert[k])) return 0;
     return 1;
 }
 
@@ -165,8 +99,8 @@ static int set_to_face(const vrPolyhedron *p, int f, vrIntSet *s)
     int k;
     s->n = 0;
     for (k = p->face_start[f]; k < p->face_start[f + 1]; k++)
-        if (set_add(s, p->face_vert[k])) return -1;
-    set_sort(s);
+        if (vrIntSet_Add(s, p->face_vert[k])) return -1;
+    vrIntSet_Sort(s);
     return 0;
 }
 
@@ -207,7 +141,7 @@ int vrSupportFeature_Find(const vrPosed *b, vec3 dir, vrFeature from, vrSupportF
     s->kind = VR_VERTEX;
     s->index = s->v.n == 1 ? s->v.v[0] : vrPolyhedron_Climb(p, d, s->v.v[0], NULL);
     s->v.n = 0;
-    return set_add(&s->v, s->index);
+    return vrIntSet_Add(&s->v, s->index);
 }
 
 /* ---- canonical distance and normal ---------------------------------------- */

@@ -6,16 +6,7 @@
 #define VROC_CANONICAL_H
 
 #include "feature.h"
-
-/* a small set of vertex indices, inline until it outgrows its buffer */
-typedef struct vrIntSet { int n, cap; int *v; int buf[32]; } vrIntSet;
-
-void vrIntSet_Init(vrIntSet *s);
-void vrIntSet_Free(vrIntSet *s);
-/* Adds the vertices of p with d.v >= floor (body frame) reachable from
- * `seed` through such vertices: on a convex polytope all of them, when the
- * set holds the top vertex.  -1 when out of memory. */
-int vrIntSet_Collect(const vrPolyhedron *p, vec3 d, int seed, double floor, vrIntSet *out);
+#include "vertex_set.h"
 
 /* a polyhedron at a pose */
 typedef struct vrPosed { const vrPolyhedron *p; const vrPose *pose; } vrPosed;

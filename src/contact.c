@@ -20,7 +20,9 @@
  */
 #include <string.h>
 
+#include <stdlib.h>
 #include "canonical.h"
+#include "face_groups.h"
 #include "contact.h"
 #include "penetration.h"
 #include "sphere.h"
@@ -98,40 +100,105 @@ static vec3 face_axis(const vrGap *g, int side, int f)
  * (gap_bound) lies below the gap of the face with the best bound cannot
  * win and is not measured: the same answer as measuring every face, from
  * a few support climbs instead of two for every face of both shapes (a
- * superquadric's hundreds, at every halving of a touch's bisection). */
+ * superquadric's hundreds, at every halving of a touch's bisection).  A
+ * big hull's faces are bounded a group at a time (face_groups.h), so that
+ * only the groups facing the other shape are looked into: the same faces
+ * found, and measured in the same order. */
 /* the bounds of the first this many faces (a's, then b's) are kept from
  * the first pass for the second, not made again: most shapes have fewer */
 #define KEPT_BOUNDS 512
+/* candidates of a grouped hull measured in face order; more: every face looked at */
+#define CANDIDATES_MOST 8192
+
+/* the best bound of all faces so far, as (bound, then the lower k) */
+typedef struct { double top; int side, f, k; } vrTopBound;
+
+static void consider(vrTopBound *t, double ub, int side, int f, int k)
+{
+    if (ub > t->top || (ub == t->top && k < t->k)) t->top = ub, t->side = side, t->f = f, t->k = k;
+}
+
+/* group g's bound on its faces' gap bounds */
+static double group_bound(const vrFaceGroup *g, const vrFaceBound *fb)
+{
+    return vr_min(vrFaceGroup_Bound(g, fb->other[0]), vrFaceGroup_Bound(g, fb->other[1]));
+}
+
+/* the best bound of one side's faces (k0: its first face's k) */
+static void best_bound(const vrPolyhedron *p, const vrFaceBound *fb, int side, int k0, vrTopBound *t, double *kept)
+{
+    const vrFaceGroups *gs = p->groups;
+    int f, i, j, first = 0;
+    if (!gs) {
+        for (f = 0; f < p->nf; f++) {
+            double ub = gap_bound(fb, p, f);
+            if (k0 + f < KEPT_BOUNDS) kept[k0 + f] = ub;
+            consider(t, ub, side, f, k0 + f);
+        }
+        return;
+    }
+    for (i = 1; i < gs->n; i++)   /* the likeliest group first: its top skips most others */
+        if (group_bound(&gs->group[i], fb) > group_bound(&gs->group[first], fb)) first = i;
+    for (j = -1; j < gs->n; j++) {
+        const vrFaceGroup *g = &gs->group[j < 0 ? first : j];
+        if ((j == first) || group_bound(g, fb) < t->top) continue;
+        for (i = 0; i < g->n; i++) {
+            f = gs->face[g->start + i];
+            consider(t, gap_bound(fb, p, f), side, f, k0 + f);
+        }
+    }
+}
+
+static int cmp_int(const void *x, const void *y) { return *(const int *)x - *(const int *)y; }
+
+/* a grouped side's faces whose bound reaches `floor`, ascending; -1 when
+ * there are more than CANDIDATES_MOST */
+static int candidates(const vrPolyhedron *p, const vrFaceBound *fb, double floor, int *out)
+{
+    const vrFaceGroups *gs = p->groups;
+    int n = 0, i, j;
+    for (j = 0; j < gs->n; j++) {
+        const vrFaceGroup *g = &gs->group[j];
+        if (group_bound(g, fb) < floor) continue;
+        for (i = 0; i < g->n; i++) {
+            int f = gs->face[g->start + i];
+            if (gap_bound(fb, p, f) < floor) continue;
+            if (n == CANDIDATES_MOST) return -1;
+            out[n++] = f;
+        }
+    }
+    qsort(out, (size_t)n, sizeof *out, cmp_int);
+    return n;
+}
 
 static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
 {
     vrFaceBound fb[2];
     vrGap warm = *g;   /* its climbs start where the last one ended */
+    vrTopBound t;
     vec3 best = vec3_zero();
-    double floor_gap, top_gap, top = -HUGE_VAL, kept[KEPT_BOUNDS];
-    int side, f, k, top_side = 0, top_f = 0;
+    double floor_gap, top_gap, kept[KEPT_BOUNDS];
+    int side, f, k, nf_a = g->a->p->nf, cand[CANDIDATES_MOST];
     fb[0] = face_bound(g->a, cb, vrPosed_Vertex(g->b, g->vb));
     fb[1] = face_bound(g->b, ca, vrPosed_Vertex(g->a, g->va));
-    for (side = 0, k = 0; side < 2; side++) {
-        const vrPolyhedron *p = side ? g->b->p : g->a->p;
-        for (f = 0; f < p->nf; f++, k++) {
-            double ub = gap_bound(&fb[side], p, f);
-            if (k < KEPT_BOUNDS) kept[k] = ub;
-            if (ub > top) top = ub, top_side = side, top_f = f;
-        }
-    }
-    top_gap = vrGap_AlongFrom(&warm, face_axis(g, top_side, top_f));
+    t.top = -HUGE_VAL, t.side = t.f = 0, t.k = -1;
+    best_bound(g->a->p, &fb[0], 0, 0, &t, kept);
+    best_bound(g->b->p, &fb[1], 1, nf_a, &t, kept);
+    top_gap = vrGap_AlongFrom(&warm, face_axis(g, t.side, t.f));
     floor_gap = top_gap - BOUND_SLACK;
     *gap = -HUGE_VAL;
-    for (side = 0, k = 0; side < 2; side++) {
+    for (side = 0; side < 2; side++) {
         const vrPolyhedron *p = side ? g->b->p : g->a->p;
-        for (f = 0; f < p->nf; f++, k++) {
+        int k0 = side ? nf_a : 0, n = p->groups ? candidates(p, &fb[side], floor_gap, cand) : -1, i;
+        for (i = 0; i < (n >= 0 ? n : p->nf); i++) {
             vec3 u;
             double h;
+            f = n >= 0 ? cand[i] : i;
+            k = k0 + f;
             /* NOLINTNEXTLINE(clang-analyzer-core.UndefinedBinaryOperatorResult): the first pass wrote kept[k], the same faces in the same order */
-            if ((k < KEPT_BOUNDS ? kept[k] : gap_bound(&fb[side], p, f)) < floor_gap) continue;
+            if (n < 0 && (k < KEPT_BOUNDS && !p->groups ? kept[k] : gap_bound(&fb[side], p, f)) < floor_gap) continue;
             u = face_axis(g, side, f);
-            h = side == top_side && f == top_f ? top_gap : vrGap_AlongFrom(&warm, u);   /* measured once */
+            h = side == t.side && f == t.f ? top_gap : vrGap_AlongFrom(&warm, u);   /* measured once */
             if (h > *gap) *gap = h, best = u;
         }
     }

@@ -48,6 +48,7 @@ typedef struct vrPolyhedron {
     mat33 inertia_unit;    /* inertia tensor about the origin per unit mass */
     double r_in, r_out;    /* inscribed / circumscribed radius about the centre (thesis 3.3.1.1) */
     vec3 shift;            /* what was subtracted from the input points to put the centre of mass at 0 */
+    struct vrFaceGroups *groups;   /* a big hull's faces by their normals (face_groups.h), else NULL */
 } vrPolyhedron;
 
 typedef struct vrFeature { int type; int index; } vrFeature; /* VR_VERTEX / VR_EDGE / VR_FACE */

@@ -21,6 +21,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "face_groups.h"
 #include "mass.h"
 #include "polyhedron.h"
 #include "progress.h"
@@ -65,6 +66,7 @@ void vrPolyhedron_Free(vrPolyhedron *p)
     free(p->face_offset);
     free(p->face_spread);
     free(p->face_drop);
+    vrFaceGroups_Free(p->groups);
     free(p);
 }
 
@@ -390,6 +392,10 @@ static int from_faces(const vec3 *vert, int nv, const int *face_start, const int
     }
     compute_margins(p);
     vrMass_Compute(p);
+    if (vrFaceGroups_Make(p) != 0) {
+        vrPolyhedron_Free(p);
+        return vrGeom_Fail(err, errlen, "out of memory");
+    }
     vrProgress_Now();
     *out = p;
     return 0;

@@ -1,20 +1,68 @@
-/* shape.c — what collides (SPEC 2): the support point of a posed shape. */
+/* shape.c — a shape's support point (shape.h): the farthest vertex along a
+ * direction, the first of equals, by a scan of a few vertices or a climb
+ * over many (a superquadric of 300 x 300 points scanned its 90,000 at
+ * every call of libccd's MPR: half of a frame of such bodies meeting). */
 #include "shape.h"
+#include "polyhedron.h"
 
-vec3 vrShape_Support(const vrShape *s, const vrPose *p, vec3 dir)
+#define SCAN_MOST 64    /* vertices scanned outright; a larger hull is climbed */
+#define NEAR_MOST 64    /* vertices near the climbed top looked at; more: scanned */
+
+/* the scan's answer: the highest along d (body frame), the first of equals */
+static int scanned_top(const vrPolyhedron *p, vec3 d)
 {
-    vec3 d;
+    double m = vec3_dot(d, p->vert[0]);
     int i, best = 0;
-    double m;
-    if (s->kind == VR_SHAPE_SPHERE) return vec3_madd(p->p, s->radius, vec3_normalize(dir));
-    d = mat33_tmulv(&p->R, dir);     /* in the body frame: one rotation, not one per vertex */
-    m = vec3_dot(d, s->poly->vert[0]);
-    for (i = 1; i < s->poly->nv; i++) {
-        double h = vec3_dot(d, s->poly->vert[i]);
+    for (i = 1; i < p->nv; i++) {
+        double h = vec3_dot(d, p->vert[i]);
         if (h > m) {
             m = h;
             best = i;
         }
     }
-    return vrPose_apply(p, s->poly->vert[best]);
+    return best;
 }
+
+/* The scan's answer by a climb from `start`.  A climb ends on a vertex no
+ * neighbour beats; the vertices that rounding could rank with it or above
+ * it lie within `slack` of it, and those above a plane of a convex
+ * polyhedron are joined by its edges, so a search among them from the top
+ * meets every one: of those, the highest, the first of equals, as the scan
+ * would pick.  More of them than NEAR_MOST (a big flat face): the scan. */
+static int climbed_top(const vrPolyhedron *p, vec3 d, int start)
+{
+    int near[NEAR_MOST], n = 1, i, k, best;
+    int v = vrPolyhedron_Climb(p, d, start, NULL);
+    double h = vec3_dot(d, p->vert[v]), slack = 1e-12 * vec3_len(d) * vec3_len(p->vert[v]), hb;
+    near[0] = best = v;
+    hb = h;
+    for (i = 0; i < n; i++)
+        for (k = p->vert_edge_start[near[i]]; k < p->vert_edge_start[near[i] + 1]; k++) {
+            int w = vrPolyhedron_OtherEnd(p, p->vert_edge[k], near[i]), j;
+            double hw = vec3_dot(d, p->vert[w]);
+            if (hw < h - slack) continue;
+            for (j = 0; j < n && near[j] != w; j++) continue;
+            if (j < n) continue;
+            if (n == NEAR_MOST) return scanned_top(p, d);
+            near[n++] = w;
+            if (hw > hb || (hw == hb && w < best)) hb = hw, best = w;
+        }
+    return best;
+}
+
+vec3 vrShape_SupportFrom(const vrShape *s, const vrPose *p, vec3 dir, int *hint)
+{
+    vec3 d;
+    int v;
+    if (s->kind == VR_SHAPE_SPHERE) return vec3_madd(p->p, s->radius, vec3_normalize(dir));
+    d = mat33_tmulv(&p->R, dir);     /* in the body frame: one rotation, not one per vertex */
+    if (s->poly->nv <= SCAN_MOST) {
+        v = scanned_top(s->poly, d);
+    } else {
+        v = climbed_top(s->poly, d, hint && *hint >= 0 && *hint < s->poly->nv ? *hint : 0);
+        if (hint) *hint = v;
+    }
+    return vrPose_apply(p, s->poly->vert[v]);
+}
+
+vec3 vrShape_Support(const vrShape *s, const vrPose *p, vec3 dir) { return vrShape_SupportFrom(s, p, dir, NULL); }

@@ -21,8 +21,13 @@ typedef struct vrShape {
 } vrShape;
 
 /* The posed shape's point farthest along dir (non-zero): a sphere's surface
- * point, a polyhedron's vertex (the first of equals; O(vertices)).  libccd's
- * support function, and how far a shape reaches along a direction. */
+ * point, a polyhedron's vertex (the first of equals: a scan's answer,
+ * found by a climb over a hull of many vertices).  libccd's support
+ * function, and how far a shape reaches along a direction. */
 vec3 vrShape_Support(const vrShape *s, const vrPose *p, vec3 dir);
+/* the same, the climb starting at *hint (a vertex index; -1 or out of
+ * range: vertex 0), which gets the vertex found: calls along nearby
+ * directions (libccd's) climb little */
+vec3 vrShape_SupportFrom(const vrShape *s, const vrPose *p, vec3 dir, int *hint);
 
 #endif
