@@ -167,7 +167,7 @@ static int candidates(const vrPolyhedron *p, const vrFaceBound *fb, double floor
             out[n++] = f;
         }
     }
-    qsort(out, (size_t)n, sizeof *out, cmp_int);
+    if (n > 1) qsort(out, (size_t)n, sizeof *out, cmp_int);   /* (a count of none or one is sorted) */
     return n;
 }
 
