@@ -165,6 +165,7 @@ static int match_twins(vrPolyhedron *p, HalfEdges *he, int nh, char *err, size_t
     int h, k, ne = 0;
     for (h = 0; h < nh; h++) {
         int a = p->face_vert[h], b = h_head(p, he, h), found = 0;
+        vrProgress_Tick();           /* a fine hull's million half-edges: a worker's heartbeat */
         for (k = he->out_start[b]; k < he->out_start[b + 1]; k++)
             if (he->out_head[k] == a) {
                 he->twin[h] = he->out[k];
@@ -196,6 +197,7 @@ static int order_vertex_edges(vrPolyhedron *p, const HalfEdges *he, char *err, s
     for (v = 0; v < p->nv; v++) {
         int start = he->out_start[v], deg = he->out_start[v + 1] - start, n = 0;
         int h0 = he->out[start], h = h0;
+        vrProgress_Tick();
         p->vert_edge_start[v] = start;
         do {
             p->vert_edge[start + n++] = he->edge[h];
@@ -216,6 +218,7 @@ static int build_graph(vrPolyhedron *p, char *err, size_t errlen)
         halfedges_free(&he);
         return vrGeom_Fail(err, errlen, "out of memory");
     }
+    vrProgress_Now();
     bucket_by_tail(p, &he, nh);
     vrProgress_Now();
     rc = match_twins(p, &he, nh, err, errlen);
@@ -371,6 +374,7 @@ static int from_faces(const vec3 *vert, int nv, const int *face_start, const int
     int nh, rc;
     *out = NULL;
     if (check_loops(nv, face_start, face_vert, nf, err, errlen) != 0) return -1;
+    vrProgress_Now();
     nh = face_start[nf];
     if (nh % 2 != 0) return vrGeom_Fail(err, errlen, "odd number of face sides (not a closed surface)");
     p = poly_alloc(nv, nf, nh);
@@ -379,6 +383,7 @@ static int from_faces(const vec3 *vert, int nv, const int *face_start, const int
     memcpy(p->face_start, face_start, sizeof *face_start * (nf + 1));
     memcpy(p->face_vert, face_vert, sizeof *face_vert * nh);
     /* a million vertices take seconds: the progress hook hears each stage */
+    vrProgress_Now();
     rc = build_graph(p, err, errlen);
     vrProgress_Now();
     if (rc == 0 && recentre) rc = centre(p, err, errlen);
@@ -391,7 +396,9 @@ static int from_faces(const vec3 *vert, int nv, const int *face_start, const int
         return -1;
     }
     compute_margins(p);
+    vrProgress_Now();
     vrMass_Compute(p);
+    vrProgress_Now();
     if (vrFaceGroups_Make(p) != 0) {
         vrPolyhedron_Free(p);
         return vrGeom_Fail(err, errlen, "out of memory");
