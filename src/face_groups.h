@@ -2,7 +2,7 @@
  * map of their normals), each group with a cone holding its normals and
  * its least plane offset.  The search for the face along which two shapes
  * lie farthest apart (contact.c's touching_axis) bounds a whole group from
- * these and skips it: a superquadric of 300 x 300 points has 180,000
+ * these and skips it: a superquadric of 300 x 300 points has 90,000
  * faces, and that search looked at each of them at every touch. */
 #ifndef VROC_FACE_GROUPS_H
 #define VROC_FACE_GROUPS_H
