@@ -4,9 +4,9 @@
  * every call of libccd's MPR: half of a frame of such bodies meeting). */
 #include "shape.h"
 #include "polyhedron.h"
+#include "vertex_set.h"
 
 #define SCAN_MOST 64    /* vertices scanned outright; a larger hull is climbed */
-#define NEAR_MOST 64    /* vertices near the climbed top looked at; more: scanned */
 
 /* the scan's answer: the highest along d (body frame), the first of equals */
 static int scanned_top(const vrPolyhedron *p, vec3 d)
@@ -26,27 +26,27 @@ static int scanned_top(const vrPolyhedron *p, vec3 d)
 /* The scan's answer by a climb from `start`.  A climb ends on a vertex no
  * neighbour beats; the vertices that rounding could rank with it or above
  * it lie within `slack` of it, and those above a plane of a convex
- * polyhedron are joined by its edges, so a search among them from the top
- * meets every one: of those, the highest, the first of equals, as the scan
- * would pick.  More of them than NEAR_MOST (a big flat face): the scan. */
+ * polyhedron are joined by its edges (vrIntSet_Collect meets every one):
+ * of those, the highest, the first of equals, as the scan would pick.  A
+ * top that stands clear of its neighbours is the answer at once. */
 static int climbed_top(const vrPolyhedron *p, vec3 d, int start)
 {
-    int near[NEAR_MOST], n = 1, i, k, best;
-    int v = vrPolyhedron_Climb(p, d, start, NULL);
-    double h = vec3_dot(d, p->vert[v]), slack = 1e-12 * vec3_len(d) * vec3_len(p->vert[v]), hb;
-    near[0] = best = v;
-    hb = h;
-    for (i = 0; i < n; i++)
-        for (k = p->vert_edge_start[near[i]]; k < p->vert_edge_start[near[i] + 1]; k++) {
-            int w = vrPolyhedron_OtherEnd(p, p->vert_edge[k], near[i]), j;
-            double hw = vec3_dot(d, p->vert[w]);
-            if (hw < h - slack) continue;
-            for (j = 0; j < n && near[j] != w; j++) continue;
-            if (j < n) continue;
-            if (n == NEAR_MOST) return scanned_top(p, d);
-            near[n++] = w;
-            if (hw > hb || (hw == hb && w < best)) hb = hw, best = w;
-        }
+    vrIntSet near;
+    double gap, h, slack, hb;
+    int v = vrPolyhedron_Climb(p, d, start, &gap), i, best = v;
+    h = hb = vec3_dot(d, p->vert[v]);
+    slack = 1e-12 * vec3_len(d) * vec3_len(p->vert[v]);
+    if (gap > slack) return v;
+    vrIntSet_Init(&near);
+    if (vrIntSet_Collect(p, d, v, h - slack, &near) != 0) {   /* no memory */
+        vrIntSet_Free(&near);
+        return scanned_top(p, d);
+    }
+    for (i = 0; i < near.n; i++) {
+        double hw = vec3_dot(d, p->vert[near.v[i]]);
+        if (hw > hb || (hw == hb && near.v[i] < best)) hb = hw, best = near.v[i];
+    }
+    vrIntSet_Free(&near);
     return best;
 }
 
