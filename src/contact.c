@@ -364,6 +364,12 @@ int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const 
     return 0;
 }
 
+/* 0: dist above d; 1: at most d; 2: at d (within VR_AT_LEVEL below it) */
+static int at_level(double dist, double d)
+{
+    return dist > d ? 0 : dist >= d - VR_AT_LEVEL ? 2 : 1;
+}
+
 /* One walk: its own distance when that is clear of d, else the canonical
  * distance finished from the same walk (a second walk from where the first
  * ended would only confirm it). */
@@ -378,7 +384,7 @@ int vrContact_Within(const vrShape *a, const vrPose *pa, const vrShape *b, const
     if (a->kind == VR_SHAPE_SPHERE || b->kind == VR_SHAPE_SPHERE || !a->poly || !b->poly || !cache) {
         seen->dist = INFINITY;   /* a shape without its polyhedron is measured as far: never within */
         contact(a, pa, b, pb, -1, cache, seen);
-        return seen->dist <= d;
+        return at_level(seen->dist, d);
     }
     dw = vrClosest_Walk(a->poly, pa, b->poly, pb, cache, &ca, &cb, NULL, &pen);
     seen->dist = pen ? fmin(dw, 0.0) : dw;
@@ -395,7 +401,7 @@ int vrContact_Within(const vrShape *a, const vrPose *pa, const vrShape *b, const
     c.dist = dw;
     c.npoints = 0;
     poly_finish(a, pa, b, pb, -1, cache, dw, ca, cb, pen, &c);
-    return c.dist <= d;
+    return at_level(c.dist, d);
 }
 
 int vrContact_Distance(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,

@@ -100,10 +100,17 @@ int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const 
  * is clear of the envelope trusts the walk this far from it. */
 #define VR_QUICK_CLEAR 1e-5
 
+/* A canonical distance this little below a level is at the level: the
+ * bisection stops at the first halving found there (bisect.c).  Half the
+ * distance bounds' tolerance, so no bound ever decides such a halving:
+ * every run measures it, whatever it measured before. */
+#define VR_AT_LEVEL 5e-13
+
 /* Is the distance <= d?  The walk's own distance decides when it is more
  * than VR_QUICK_TOL from d (the canonical answer is then the same), else
  * vrContact_Distance's, finished from the same walk: the bisection's test
- * (SPEC 3.2), one walk a call.  seen (may be NULL) gets what was measured:
+ * (SPEC 3.2), one walk a call.  2 when the canonical distance is at d (no
+ * more than VR_AT_LEVEL below it).  seen (may be NULL) gets what was measured:
  * dist, and closest points pa, pb that are points of the bodies (the
  * walk's for polyhedra, which may differ from vrContact_Distance's in the
  * last bits or, for parallel faces, in place); dist <= 0 when the shapes

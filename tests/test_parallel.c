@@ -679,10 +679,12 @@ done:
 static int test_switching_workers_or_heap_mid_run_changes_no_bit(void)
 {
     vrStats st;
-    unsigned long long straight = after_switches(settling_pyramid, 8, 0, &st);
-    unsigned long long switched = after_switches(settling_pyramid, 8, 1, &st);
+    unsigned long long straight = after_switches(settling_pyramid, 5, 0, &st);
+    unsigned long long switched = after_switches(settling_pyramid, 5, 1, &st);
     printf("    %lld island steps, %lld contacts\n", st.island_steps, st.island_contacts);
-    ENSURE(straight != 0 && st.island_steps > 50);   /* contacts in play at the switches */
+    /* contacts in play at the switches: the top box lands at the 10th
+     * frame, and the pyramid comes to rest after the 20th */
+    ENSURE(straight != 0 && st.island_steps > 40);
     ENSURE_MSG(switched == straight, "switched %016llx, straight %016llx", switched, straight);
     return 0;
 }

@@ -239,8 +239,10 @@ static void closing_pair(vrBody *a, vrBody *b, double x0, vrFlight *f)
 
 /* the owner's first impact between a and b on grid g, and the time that 48
  * halvings of the first grid step ending within the contact gap g_c =
- * min(d, 1 mm) give (this file's own, by the definitions in SPEC 3.2 and
- * 7); 0 when the owner's first event is not an impact of the pair */
+ * min(d, 1 mm) give, stopping at the first halving whose distance is at
+ * g_c (VR_AT_LEVEL below it at most) (this file's own, by the definitions
+ * in SPEC 3.2 and 7 and man vroc's); 0 when the owner's first event is
+ * not an impact of the pair */
 static int owner_and_halvings(vrBody *a, vrBody *b, const vrFlight *f, const vrGrid *g, double d,
                               double *owner, double *halved, long long *checks)
 {
@@ -267,16 +269,21 @@ static int owner_and_halvings(vrBody *a, vrBody *b, const vrFlight *f, const vrG
         ;
     lo = vrGrid_Point(g, k - 1), hi = vrGrid_Point(g, k);
     for (i = 0; i < 48; i++) {
-        double mid = lo + 0.5 * (hi - lo);
-        if (distance(a, b, mid, NULL, NULL) <= gc) hi = mid;
-        else lo = mid;
+        double mid = lo + 0.5 * (hi - lo), dist = distance(a, b, mid, NULL, NULL);
+        if (dist > gc) {
+            lo = mid;
+            continue;
+        }
+        hi = mid;
+        if (dist >= gc - VR_AT_LEVEL) break;   /* at the level: the event */
     }
     *halved = hi;
     return 1;
 }
 
-/* SPEC 3.2: an impact inside a grid step is found by exactly 48 halvings
- * of that step, the event at the upper end of the final bracket.  The
+/* SPEC 3.2: an impact inside a grid step is found by 48 halvings of that
+ * step, the event at the upper end of the final bracket, or at the first
+ * halving whose distance is at the level (man vroc).  The
  * owner's event time equals this file's own 48 halvings, to the bit, for an
  * impact near 0.3 s and one near 40 s (where the bracket reaches adjacent
  * doubles before the 48th halving and the owner stops early). */
