@@ -20,9 +20,9 @@
 #define BOUND_TOL 1e-12
 
 /* the bisection's test: is the pair's distance at t at most level (d: an
- * impact; 0: touching)?  2: at the level (contact.h, VR_AT_LEVEL).  When what was measured can bound the distance
- * nearby (a gap and closest points), *near (if not NULL) gets those bounds
- * for times in [lo, hi]. */
+ * impact; 0: touching)?  2: at the level (contact.h, VR_AT_LEVEL).  When
+ * what was measured can bound the distance nearby (a gap and closest
+ * points), *near (if not NULL) gets those bounds for times in [lo, hi]. */
 int vrPair_Within(vrOwner *o, vrPair *p, double t, double level, double lo, double hi, vrDistBound *near)
 {
     vrBody *A = o->body[p->a], *B = o->body[p->b];
@@ -53,11 +53,11 @@ static int decided(vrDistBound *const near[2], double t, double level)
 
 /* the first time in (lo, hi] with distance <= level: BISECTIONS halvings,
  * the event at the upper end of the final bracket (SPEC 3.2), or at the
- * first halving whose distance is at the level (a decision of vroc's,
- * man vroc).  at_hi is the
- * query at hi.  A halving whose answer the bounds from a measurement at
- * either end of the bracket prove (distbound.h) is not asked of the
- * geometry: the same answers, so the same bracket, from a few walks.
+ * first halving whose distance is at the level (a decision of vroc's, man
+ * vroc).  at_hi is the query at hi.  A halving whose answer the bounds
+ * from a measurement at either end of the bracket prove (distbound.h) is
+ * not asked of the geometry: the same answers, so the same bracket, from
+ * a few walks.
  * NAN once the bracket is past `wanted` (an event found at this grid point
  * comes first): the event would be dropped, and this grid point's looks
  * rolled back, after the first is answered; the halvings left, where most
@@ -93,7 +93,9 @@ double vrPair_Bisect(vrOwner *o, vrPair *p, double lo, double hi, const vrContac
         if ((in = decided(near, mid, level)) < 0) {
             vrDistBound *was;
             in = vrPair_Within(o, p, mid, level, lo0, hi0, spare);
-            was = near[in != 0], near[in != 0] = spare, spare = was;
+            /* the bounds hold over the whole bracket: an end that moved
+             * keeps the old ones when the new measurement gave none */
+            if (spare->valid) was = near[in != 0], near[in != 0] = spare, spare = was;
         }
         if (in) {
             hi = mid;
