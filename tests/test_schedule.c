@@ -283,11 +283,11 @@ static int owner_and_halvings(vrBody *a, vrBody *b, const vrFlight *f, const vrG
 
 /* SPEC 3.2: an impact inside a grid step is found by 48 halvings of that
  * step, the event at the upper end of the final bracket, or at the first
- * halving whose distance is at the level (man vroc).  The
- * owner's event time equals this file's own 48 halvings, to the bit, for an
- * impact near 0.3 s and one near 40 s (where the bracket reaches adjacent
- * doubles before the 48th halving and the owner stops early). */
-static int test_impact_time_is_the_upper_end_after_48_halvings(void)
+ * halving whose distance is at the level (man vroc).  The owner's event
+ * time equals this file's own halvings, to the bit, for an impact near 0.3
+ * s and one near 40 s (where the bracket may reach adjacent doubles before
+ * the 48th halving and the owner stops early). */
+static int test_impact_time_is_the_upper_end_of_the_halvings(void)
 {
     static const double x0[2] = {-0.36234567, -20.21234567}, t0[2] = {0, 30};
     int c;
@@ -301,14 +301,14 @@ static int test_impact_time_is_the_upper_end_after_48_halvings(void)
         g.t0 = g.a = t0[c], g.T = g.frame_T = t0[c] + 20, g.n = 2000, g.h = 0.01, g.k0 = 0;
         ENSURE(owner_and_halvings(&a, &b, &f, &g, 0.01, &owner, &halved, &checks));
         printf("    impact at %.17g s (exact %.17g s)\n", owner, (x0[c] + 0.2 + VR_CONTACT_GAP) / -0.5);
-        ENSURE_MSG(owner == halved, "owner %.17g, 48 halvings %.17g", owner, halved);
+        ENSURE_MSG(owner == halved, "owner %.17g, halvings %.17g", owner, halved);
     }
     return 0;
 }
 
 /* Two pairs meeting within the same grid step, each alone and both in one
  * owner, in both orders of pair index: the owner's first event is the
- * earlier impact at its 48 halvings' time; a bisection that passes an
+ * earlier impact at its halvings' time; a bisection that passes an
  * impact already found at that grid point stops (its event could only be
  * dropped), so fewer distance queries are asked than by the two pairs
  * alone.  Without the heap the pairs are looked at in index order, so the
@@ -363,8 +363,9 @@ static int test_a_bisection_past_an_event_found_stops(void)
  * or on a cube, and for a cube falling flat over the plate's edge (the
  * faces parallel, the contact overhanging), where the bisection skips the
  * halvings that motion bounds decide (distbound.h): the owner's impact time
- * is still the 48 halvings' to the bit, with fewer distance queries. */
-static int test_impact_times_of_spinning_boxes_are_48_halvings(void)
+ * is still the halvings' to the bit (the stop at the level included), with
+ * fewer distance queries. */
+static int test_impact_times_of_spinning_boxes_are_the_halvings(void)
 {
     vrPolyhedron *cube = NULL, *plate = NULL;
     int trial, impacts = 0, rc = 1;
@@ -392,7 +393,7 @@ static int test_impact_times_of_spinning_boxes_are_48_halvings(void)
         if (!owner_and_halvings(&a, &b, &f, &g, d, &owner, &halved, &c)) continue;
         impacts++;
         checks += c;
-        ENSURE_MSG(owner == halved, "trial %d: owner %.17g, 48 halvings %.17g", trial, owner, halved);
+        ENSURE_MSG(owner == halved, "trial %d: owner %.17g, halvings %.17g", trial, owner, halved);
     }
     printf("    %d impacts, %lld distance queries by the owner in all\n", impacts, checks);
     ENSURE(impacts >= 80);
@@ -514,9 +515,9 @@ static const vrTest tests[] = {
     TEST(test_sphere_keys_are_exact_for_free_pairs),
     TEST(test_grid_follows_thesis_rule_without_spin),
     TEST(test_a_span_keeps_its_contact_steps_points),
-    TEST(test_impact_time_is_the_upper_end_after_48_halvings),
+    TEST(test_impact_time_is_the_upper_end_of_the_halvings),
     TEST(test_a_bisection_past_an_event_found_stops),
-    TEST(test_impact_times_of_spinning_boxes_are_48_halvings),
+    TEST(test_impact_times_of_spinning_boxes_are_the_halvings),
     TEST(test_a_push_out_in_a_later_frame_is_no_hit),
     TEST(test_the_start_check_looks_at_the_bodies_it_is_given),
     TEST(test_a_push_out_does_not_drive_a_body_into_its_static_support),
