@@ -118,14 +118,19 @@ static void consider(vrTopBound *t, double ub, int side, int f, int k)
     if (ub > t->top || (ub == t->top && k < t->k)) t->top = ub, t->side = side, t->f = f, t->k = k;
 }
 
-/* group g's bound on its faces' gap bounds */
-static double group_bound(const vrFaceGroup *g, const vrFaceBound *fb)
+/* each group's bound on its faces' gap bounds (gb[j]: group j's), made
+ * once for both passes */
+static void group_bounds(const vrFaceGroups *gs, const vrFaceBound *fb, double *gb)
 {
-    return vr_min(vrFaceGroup_Bound(g, fb->other[0]), vrFaceGroup_Bound(g, fb->other[1]));
+    int j;
+    for (j = 0; j < gs->n; j++)
+        gb[j] = vr_min(vrFaceGroup_Bound(&gs->group[j], fb->other[0]), vrFaceGroup_Bound(&gs->group[j], fb->other[1]));
 }
 
-/* the best bound of one side's faces (k0: its first face's k) */
-static void best_bound(const vrPolyhedron *p, const vrFaceBound *fb, int side, int k0, vrTopBound *t, double *kept)
+/* the best bound of one side's faces (k0: its first face's k; gb: its
+ * groups' bounds, when it has groups) */
+static void best_bound(const vrPolyhedron *p, const vrFaceBound *fb, const double *gb, int side, int k0,
+                       vrTopBound *t, double *kept)
 {
     const vrFaceGroups *gs = p->groups;
     int f, i, j, first = 0;
@@ -138,10 +143,10 @@ static void best_bound(const vrPolyhedron *p, const vrFaceBound *fb, int side, i
         return;
     }
     for (i = 1; i < gs->n; i++)   /* the likeliest group first: its top skips most others */
-        if (group_bound(&gs->group[i], fb) > group_bound(&gs->group[first], fb)) first = i;
+        if (gb[i] > gb[first]) first = i;
     for (j = -1; j < gs->n; j++) {
         const vrFaceGroup *g = &gs->group[j < 0 ? first : j];
-        if ((j == first) || group_bound(g, fb) < t->top) continue;
+        if ((j == first) || gb[j < 0 ? first : j] < t->top) continue;
         for (i = 0; i < g->n; i++) {
             f = gs->face[g->start + i];
             consider(t, gap_bound(fb, p, f), side, f, k0 + f);
@@ -153,13 +158,13 @@ static int cmp_int(const void *x, const void *y) { return *(const int *)x - *(co
 
 /* a grouped side's faces whose bound reaches `floor`, ascending; -1 when
  * there are more than CANDIDATES_MOST */
-static int candidates(const vrPolyhedron *p, const vrFaceBound *fb, double floor, int *out)
+static int candidates(const vrPolyhedron *p, const vrFaceBound *fb, const double *gb, double floor, int *out)
 {
     const vrFaceGroups *gs = p->groups;
     int n = 0, i, j;
     for (j = 0; j < gs->n; j++) {
         const vrFaceGroup *g = &gs->group[j];
-        if (group_bound(g, fb) < floor) continue;
+        if (gb[j] < floor) continue;
         for (i = 0; i < g->n; i++) {
             int f = gs->face[g->start + i];
             if (gap_bound(fb, p, f) < floor) continue;
@@ -177,19 +182,21 @@ static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
     vrGap warm = *g;   /* its climbs start where the last one ended */
     vrTopBound t;
     vec3 best = vec3_zero();
-    double floor_gap, top_gap, kept[KEPT_BOUNDS];
+    double floor_gap, top_gap, kept[KEPT_BOUNDS], gb[2][VR_FACE_GROUPS_MOST];
     int side, f, k, nf_a = g->a->p->nf, cand[CANDIDATES_MOST];
     fb[0] = face_bound(g->a, cb, vrPosed_Vertex(g->b, g->vb));
     fb[1] = face_bound(g->b, ca, vrPosed_Vertex(g->a, g->va));
+    if (g->a->p->groups) group_bounds(g->a->p->groups, &fb[0], gb[0]);
+    if (g->b->p->groups) group_bounds(g->b->p->groups, &fb[1], gb[1]);
     t.top = -HUGE_VAL, t.side = t.f = 0, t.k = -1;
-    best_bound(g->a->p, &fb[0], 0, 0, &t, kept);
-    best_bound(g->b->p, &fb[1], 1, nf_a, &t, kept);
+    best_bound(g->a->p, &fb[0], gb[0], 0, 0, &t, kept);
+    best_bound(g->b->p, &fb[1], gb[1], 1, nf_a, &t, kept);
     top_gap = vrGap_AlongFrom(&warm, face_axis(g, t.side, t.f));
     floor_gap = top_gap - BOUND_SLACK;
     *gap = -HUGE_VAL;
     for (side = 0; side < 2; side++) {
         const vrPolyhedron *p = side ? g->b->p : g->a->p;
-        int k0 = side ? nf_a : 0, n = p->groups ? candidates(p, &fb[side], floor_gap, cand) : -1, i;
+        int k0 = side ? nf_a : 0, n = p->groups ? candidates(p, &fb[side], gb[side], floor_gap, cand) : -1, i;
         for (i = 0; i < (n >= 0 ? n : p->nf); i++) {
             vec3 u;
             double h;

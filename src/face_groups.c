@@ -5,8 +5,8 @@
 #include <stdlib.h>
 #include "face_groups.h"
 
-#define CELLS 8                          /* per side of each of the cube's six faces */
-#define NCELLS (6 * CELLS * CELLS)
+#define CELLS VR_FACE_GROUP_CELLS
+#define NCELLS VR_FACE_GROUPS_MOST
 
 /* what rounding in the dot products and the cone may leave a bound short
  * of (m per metre of |o|, and m): far above it, far below any gap a face

@@ -11,6 +11,9 @@
 
 /* hulls of at most this many faces are not grouped (a scan is cheap) */
 #define VR_FACE_GROUPS_MIN 512
+/* cells per side of each of the cube map's six faces, and so the most groups */
+#define VR_FACE_GROUP_CELLS 8
+#define VR_FACE_GROUPS_MOST (6 * VR_FACE_GROUP_CELLS * VR_FACE_GROUP_CELLS)
 
 typedef struct vrFaceGroup {
     vec3 axis;              /* unit; every normal of the group within the cone: */
