@@ -6,7 +6,7 @@
  * parallel many pairs are equally closest (a box flat on a table: vertex-
  * face, edge-face, face-face), and which one the walk ends on depends on
  * where its cache started.  So nothing is taken from the walk's result but
- * a direction (vrGap_WalkDirection): from it we build each body's
+ * a direction (separation.c, vrGap_WalkDirection): from it we build each body's
  * near-support set (vertices within SUPPORT_TOL of the supporting plane),
  * classify it as a vertex, an edge or a face (vrSupportFeature_Find), and
  * compute distance, normal and closest points from those features and the
@@ -21,8 +21,6 @@
  *   set_to_face, face_is_support
  *   face_against, edge_edge_normal,  the normal and distance by the kinds of
  *   point_features                   the two features
- *   vrGap_AlongFrom, try_faces,      separation along a direction; the
- *   try_edges                        candidates for the walk's direction
  *
  * No static state; scratch memory lives on the stack unless a set outgrows
  * its inline buffer.
@@ -35,7 +33,6 @@
 #include "segment.h"
 
 #define SUPPORT_TOL 1e-9   /* tau: near-support set tolerance (m) */
-#define PARALLEL_SIN2 1e-12
 
 
 /* The near-support set of b in world direction dir: the vertices within
@@ -215,7 +212,7 @@ static int edge_edge_normal(const vrPosed *a, const vrPosed *b, vrCanon *c)
     ea = vec3_sub(a1, a0);
     eb = vec3_sub(b1, b0);
     n = vec3_cross(ea, eb);
-    if (vec3_len2(n) <= PARALLEL_SIN2 * vec3_len2(ea) * vec3_len2(eb)) return 0;
+    if (vec3_len2(n) <= VR_PARALLEL_SIN2 * vec3_len2(ea) * vec3_len2(eb)) return 0;
     n = vec3_normalize(n);
     if (vec3_dot(n, vec3_sub(b->pose->p, a->pose->p)) < 0) n = vec3_neg(n);
     c->n = n;
@@ -265,102 +262,4 @@ int vrCanon_Compute(const vrPosed *a, const vrPosed *b, vec3 dir, vrFeature fa, 
         point_features(a, b, c);
     }
     return 0;
-}
-
-/* ---- the walk's direction ----------------------------------------------------- */
-
-double vrGap_AlongFrom(vrGap *g, vec3 u)
-{
-    vec3 nu = vec3_neg(u);
-    double low_b;
-    g->va = vrPolyhedron_Climb(g->a->p, mat33_tmulv(&g->a->pose->R, u), g->va, NULL);
-    if (g->b) g->vb = vrPolyhedron_Climb(g->b->p, mat33_tmulv(&g->b->pose->R, nu), g->vb, NULL);
-    low_b = g->b ? -vec3_dot(nu, vrPosed_Vertex(g->b, g->vb)) : vec3_dot(u, g->c);
-    return low_b - vec3_dot(u, vrPosed_Vertex(g->a, g->va));
-}
-
-double vrGap_Along(const vrGap *g, vec3 u)
-{
-    vrGap from = *g;   /* the climbs start at g's vertices, which stay */
-    return vrGap_AlongFrom(&from, u);
-}
-
-/* the normals (times sign) of the faces at feature f of x that separate
- * better than *best does, among those whose dot product with `near` is
- * at least min_dot */
-static void try_faces(const vrGap *g, const vrPosed *x, vrFeature f, double sign, vec3 near, double min_dot,
-                      vec3 *best, double *bestgap)
-{
-    const vrPolyhedron *p = x->p;
-    int k, j, lo = f.type == VR_VERTEX ? p->vert_edge_start[f.index] : 0;
-    int hi = f.type == VR_VERTEX ? p->vert_edge_start[f.index + 1] : 1;
-    for (k = lo; k < hi; k++)
-        for (j = 0; j < 2; j++) {
-            int e = f.type == VR_VERTEX ? p->vert_edge[k] : f.index;
-            vec3 u = vec3_scale(vrPose_rotate(x->pose, p->face_normal[p->edge_f[e][j]]), sign);
-            double gu;
-            if (vec3_dot(u, near) < min_dot) continue;
-            gu = vrGap_Along(g, u);
-            if (gu > *bestgap) *best = u, *bestgap = gu;
-        }
-}
-
-/* The cross product of edges ea of a and eb of b, when it separates
- * better than *best does.  Crossing edges a hair apart: the direction
- * between the closest points is off by 1e-16 m / gap (7e-9 rad at
- * 1.4e-8 m), which tilts a 26 cm edge 2e-9 m, beyond SUPPORT_TOL, so the
- * edge's lower end alone was taken as b's support and the distance came
- * out 0.21 m for two touching boxes; the cross product is exact. */
-static void try_edges(const vrGap *g, int ea, int eb, vec3 near, double min_dot, vec3 *best, double *bestgap)
-{
-    const vrPolyhedron *pa = g->a->p, *pb = g->b->p;
-    vec3 da = vrPose_rotate(g->a->pose, vec3_sub(pa->vert[pa->edge_v[ea][1]], pa->vert[pa->edge_v[ea][0]]));
-    vec3 db = vrPose_rotate(g->b->pose, vec3_sub(pb->vert[pb->edge_v[eb][1]], pb->vert[pb->edge_v[eb][0]]));
-    vec3 u = vec3_cross(da, db);
-    double gu, gn;
-    if (vec3_len2(u) <= PARALLEL_SIN2 * vec3_len2(da) * vec3_len2(db)) return;
-    u = vec3_normalize(u);
-    if (fabs(vec3_dot(u, near)) < min_dot) return;
-    gu = vrGap_Along(g, u);
-    gn = vrGap_Along(g, vec3_neg(u));
-    if (gn > gu) u = vec3_neg(u), gu = gn;
-    if (gu > *bestgap) *best = u, *bestgap = gu;
-}
-
-/* Direction of separation at the walk's final features fa, fb (fb unused
- * for a point): a face normal when one is a face (exact however small the
- * gap); else the direction between the closest points, against which the
- * normals of the faces at the features (and two edges' cross product)
- * compete: the best separating one wins.  Below GAP_FUZZ that direction
- * carries rounding of order 1e-16 m / gap (a plate 1e-12 m above a table,
- * walked to a pair of parallel edges, must still find the table's face).
- * Above it, parallel edges of faces that face each other tilt it for
- * real: two 0.3 m cubes side by side 1 mm apart, one 3.4e-11 m lower than
- * the other, walked to their top edges, gave a direction 3.4e-8 rad off
- * the faces' normal, along which the faces' far edges stand 1e-8 m out,
- * beyond SUPPORT_TOL: the supports were a's top edge and b's bottom edge,
- * and the distance came out 0.3 m with a vertical normal (the pair left
- * the envelope and the island).  Along the exact closest direction the
- * gap is the distance and along any other at most that, so a face normal
- * wins only where it is (within rounding) a closest direction too; above
- * GAP_FUZZ only those within NEAR_DOT of the direction are measured (a
- * corner or an edge that truly is closest has none: no cost there). */
-#define GAP_FUZZ 1e-6
-#define NEAR_DOT (1 - 1e-6)
-vec3 vrGap_WalkDirection(const vrGap *g, vrFeature fa, vrFeature fb, vec3 ca, vec3 cb, double dw)
-{
-    vec3 best, walked;
-    double bestgap, min_dot;
-    if (fa.type == VR_FACE) return vrPose_rotate(g->a->pose, g->a->p->face_normal[fa.index]);
-    if (g->b && fb.type == VR_FACE) return vec3_neg(vrPose_rotate(g->b->pose, g->b->p->face_normal[fb.index]));
-    best = walked = vec3_normalize(vec3_sub(cb, ca));
-    min_dot = dw >= GAP_FUZZ * (1 + g->a->p->r_out + (g->b ? g->b->p->r_out : 0)) ? NEAR_DOT : -2;
-    /* closest points that coincide (crossing edges 3e-17 m apart) give no
-     * direction at all: the features' own then win whatever their gap */
-    bestgap = vec3_len2(best) > 0 ? vrGap_Along(g, best) : -HUGE_VAL;
-    if (g->b && fa.type == VR_EDGE && fb.type == VR_EDGE) try_edges(g, fa.index, fb.index, walked, min_dot, &best, &bestgap);
-    if (fa.type == VR_VERTEX || fa.type == VR_EDGE) try_faces(g, g->a, fa, 1, walked, min_dot, &best, &bestgap);
-    if (g->b && (fb.type == VR_VERTEX || fb.type == VR_EDGE)) try_faces(g, g->b, fb, -1, walked, min_dot, &best, &bestgap);
-    if (vec3_len2(best) == 0) best = vrUnitOrUp(vec3_sub(g->b ? g->b->pose->p : g->c, g->a->pose->p));
-    return best;
 }

@@ -43,6 +43,10 @@ void vrCanon_Free(vrCanon *c);
  * -1 when out of memory. */
 int vrCanon_Compute(const vrPosed *a, const vrPosed *b, vec3 dir, vrFeature fa, vrFeature fb, vrCanon *c);
 
+/* edges this near parallel (the sine of their angle, squared) have no
+ * cross product to go by */
+#define VR_PARALLEL_SIN2 1e-12
+
 /* v normalised, or +z when it has no direction */
 static inline vec3 vrUnitOrUp(vec3 v)
 {
@@ -50,18 +54,5 @@ static inline vec3 vrUnitOrUp(vec3 v)
     return vec3_len2(v) > 0 ? v : vec3_make(0, 0, 1);
 }
 
-/* How far apart a (from vertex va) and b (from vb), or a and the point c
- * when b is NULL, are along world direction u: the gap between their
- * support planes, by climbing the vertex graphs. */
-typedef struct vrGap { const vrPosed *a, *b; vec3 c; int va, vb; } vrGap;
-
-double vrGap_Along(const vrGap *g, vec3 u);
-/* vrGap_Along, with g's vertices moved to the tops its climbs reached:
- * the next direction nearby starts there (a fine superquadric's climbs
- * from the walk's vertices to each of its faces' normals are long) */
-double vrGap_AlongFrom(vrGap *g, vec3 u);
-/* The direction of separation at the walk's final features fa, fb (fb
- * unused for a point), its closest points ca, cb and distance dw. */
-vec3 vrGap_WalkDirection(const vrGap *g, vrFeature fa, vrFeature fb, vec3 ca, vec3 cb, double dw);
 
 #endif

@@ -22,6 +22,7 @@
 
 #include <stdlib.h>
 #include "canonical.h"
+#include "separation.h"
 #include "face_groups.h"
 #include "contact.h"
 #include "penetration.h"

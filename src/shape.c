@@ -50,18 +50,19 @@ static int climbed_top(const vrPolyhedron *p, vec3 d, int start)
     return best;
 }
 
+int vrShape_TopVertex(const vrPolyhedron *p, vec3 d, int start)
+{
+    if (p->nv <= SCAN_MOST) return scanned_top(p, d);
+    return climbed_top(p, d, start >= 0 && start < p->nv ? start : 0);
+}
+
 vec3 vrShape_SupportFrom(const vrShape *s, const vrPose *p, vec3 dir, int *hint)
 {
-    vec3 d;
     int v;
     if (s->kind == VR_SHAPE_SPHERE) return vec3_madd(p->p, s->radius, vec3_normalize(dir));
-    d = mat33_tmulv(&p->R, dir);     /* in the body frame: one rotation, not one per vertex */
-    if (s->poly->nv <= SCAN_MOST) {
-        v = scanned_top(s->poly, d);
-    } else {
-        v = climbed_top(s->poly, d, hint && *hint >= 0 && *hint < s->poly->nv ? *hint : 0);
-        if (hint) *hint = v;
-    }
+    /* in the body frame: one rotation, not one per vertex */
+    v = vrShape_TopVertex(s->poly, mat33_tmulv(&p->R, dir), hint ? *hint : 0);
+    if (hint && s->poly->nv > SCAN_MOST) *hint = v;
     return vrPose_apply(p, s->poly->vert[v]);
 }
 

@@ -29,5 +29,10 @@ vec3 vrShape_Support(const vrShape *s, const vrPose *p, vec3 dir);
  * range: vertex 0), which gets the vertex found: calls along nearby
  * directions (libccd's) climb little */
 vec3 vrShape_SupportFrom(const vrShape *s, const vrPose *p, vec3 dir, int *hint);
+/* the index of that vertex of hull p along d in p's own frame, a climb
+ * over a hull of many vertices starting at `start`: a pure function of p
+ * and d, wherever the climb starts (a climb alone stops at whichever of
+ * tied tops it meets first) */
+int vrShape_TopVertex(const vrPolyhedron *p, vec3 d, int start);
 
 #endif

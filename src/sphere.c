@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "canonical.h"
+#include "separation.h"
 #include "segment.h"
 #include "sphere.h"
 
