@@ -146,8 +146,9 @@ static void best_bound(const vrPolyhedron *p, const vrFaceBound *fb, const doubl
     for (i = 1; i < gs->n; i++)   /* the likeliest group first: its top skips most others */
         if (gb[i] > gb[first]) first = i;
     for (j = -1; j < gs->n; j++) {
-        const vrFaceGroup *g = &gs->group[j < 0 ? first : j];
-        if ((j == first) || gb[j < 0 ? first : j] < t->top) continue;
+        int at = j < 0 ? first : j;
+        const vrFaceGroup *g = &gs->group[at];
+        if (j == first || gb[at] < t->top) continue;
         for (i = 0; i < g->n; i++) {
             f = gs->face[g->start + i];
             consider(t, gap_bound(fb, p, f), side, f, k0 + f);

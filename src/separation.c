@@ -97,6 +97,12 @@ static void pick_measured(vrPick *k, vec3 u, double gap, long long order)
     k->u[k->n] = u, k->gap[k->n] = gap, k->order[k->n++] = order;
 }
 
+/* the lone candidate measured: a second one has come */
+static void pick_measure_lone(vrPick *k)
+{
+    if (k->lone) k->lone = 0, pick_measured(k, k->lone_u, vrGap_Along(k->g, k->lone_u), k->lone_order);
+}
+
 /* a candidate: measured once there are two */
 static void pick_add(vrPick *k, vec3 u, long long order)
 {
@@ -109,7 +115,7 @@ static void pick_add(vrPick *k, vec3 u, long long order)
         k->lone = 1, k->lone_u = u, k->lone_order = order;
         return;
     }
-    if (k->lone) k->lone = 0, pick_measured(k, k->lone_u, vrGap_Along(k->g, k->lone_u), k->lone_order);
+    pick_measure_lone(k);
     pick_measured(k, u, vrGap_Along(k->g, u), order);
 }
 
@@ -168,7 +174,7 @@ static void try_edges(const vrGap *g, int ea, int eb, vec3 near, double min_dot,
     gu = vrGap_Along(g, u);
     gn = vrGap_Along(g, vec3_neg(u));
     if (gn > gu) u = vec3_neg(u), gu = gn;
-    if (k->lone) k->lone = 0, pick_measured(k, k->lone_u, vrGap_Along(g, k->lone_u), k->lone_order);
+    pick_measure_lone(k);
     pick_measured(k, u, gu, pick_order(RANK_EDGES, (long long)ea * pb->ne + eb));
 }
 
