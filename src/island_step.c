@@ -18,8 +18,8 @@
  * pairs sorted by pair order, so serial and parallel runs, and heap on and
  * off, give the same bits.
  *   by_pair             the touching pairs' order
- *   root, join          union-find over body ids
  *   Island, add_body    one island's bodies and contacts for the solve
+ *                       (which touches make which island: island_group.c)
  *   island_body         a body as island.c needs it
  *   solve_one           an island solved, its bodies' new states
  *   leave_contact       bodies no longer touching fly under the force again
@@ -30,6 +30,7 @@
 #include <string.h>
 #include "island_step.h"
 #include "island.h"
+#include "island_group.h"
 #include "config.h"
 #include "ownerset.h"
 #include "owners.h"
@@ -50,23 +51,6 @@ static int by_pair(const void *x, const void *y)
     return a->b < b->b ? -1 : a->b > b->b;
 }
 
-static int root(int *parent, int i)
-{
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-}
-
-/* the lower id stays the root: an island's id is its lowest body id */
-static void join(int *parent, int a, int b)
-{
-    a = root(parent, a), b = root(parent, b);
-    if (a < b) parent[b] = a;
-    else if (b < a) parent[a] = b;
-}
-
-/* a held body (kinematic) is a boundary, as a static one, with a velocity */
-static int moving(const vrWorld *w, int id) { return !vrBody_Immovable(&w->table.obj[id]->body); }
-
 /* one island's solve: its bodies (object ids, in id order; statics too)
  * and its contacts */
 typedef struct Island {
@@ -76,11 +60,11 @@ typedef struct Island {
     vrIslandContact *c;
 } Island;
 
-static int add_body(Island *is, int id)
+/* body id's index in the island, added if new; slot (by id, -1 where
+ * none) finds it without a search (an island of a thousand bodies) */
+static int add_body(Island *is, int *slot, int id)
 {
-    int i;
-    for (i = 0; i < is->n; i++)
-        if (is->id[i] == id) return i;
+    if (slot[id] >= 0) return slot[id];
     if (is->n == is->cap) {
         int cap = is->cap ? 2 * is->cap : 16;
         int *ids = realloc(is->id, (size_t)cap * sizeof *ids);
@@ -90,7 +74,7 @@ static int add_body(Island *is, int id)
         is->body = b, is->cap = cap;
     }
     is->id[is->n] = id;
-    return is->n++;
+    return slot[id] = is->n++;
 }
 
 /* body id at t as island.c sees it: a moving one with the step's gravity
@@ -157,9 +141,9 @@ static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrI
     }
 }
 
-/* the island of root r: its contacts (touches[first..] whose moving body
- * is in it), solved; its moving bodies' states into up */
-static int solve_one(vrWorld *w, Island *is, const int *parent, int r, double t, double h, vrUpdate *up)
+/* the island of root r: its contacts (the touches of run), solved; its
+ * moving bodies' states into up (none of them is in it yet) */
+static int solve_one(vrWorld *w, Island *is, const vrRooted *run, int len, int r, double t, double h, vrUpdate *up)
 {
     int instant = h == 0;
     vrParams p = vrSettings_Params(&w->s);
@@ -167,21 +151,16 @@ static int solve_one(vrWorld *w, Island *is, const int *parent, int r, double t,
     double gc = vrParams_Gap(&p), v_rest = sqrt(2.0 * vec3_len(p.flight.accel) * gc);
     int i, k, nc;
     is->n = is->nc = 0;
-    for (k = 0; k < w->touches.n; k++) {
-        const vrTouch *c = &w->touches.t[k];
-        int x = moving(w, c->a) ? c->a : c->b, ia, ib;
-        double mu;
-        if (c->leaving > 0 || root((int *)parent, x) != r) continue;
-        ia = add_body(is, c->a);
-        ib = add_body(is, c->b);
-        if (ia < 0 || ib < 0) return -1;
-        mu = sqrt(w->table.obj[c->a]->body.friction * w->table.obj[c->b]->body.friction);
-        if (add_contact(is, c, ia, ib, mu) != 0) return -1;
+    for (k = 0; k < len; k++) {
+        const vrTouch *c = &w->touches.t[run[k].k];
+        int ia = add_body(is, w->isl_slot, c->a), ib = ia < 0 ? -1 : add_body(is, w->isl_slot, c->b);
+        if (ib < 0 || add_contact(is, c, ia, ib, sqrt(w->table.obj[c->a]->body.friction * w->table.obj[c->b]->body.friction)) != 0) break;
     }
+    for (i = 0; i < is->n; i++) w->isl_slot[is->id[i]] = -1;   /* as it was: -1 everywhere */
+    if (k < len) return -1;
     for (i = 0; i < is->n; i++) island_body(w, is->id[i], t, gh, &is->body[i]);
-    for (k = 0, nc = 0; k < w->touches.n; k++) {
-        const vrTouch *c = &w->touches.t[k];
-        if (c->leaving > 0 || root((int *)parent, moving(w, c->a) ? c->a : c->b) != r) continue;
+    for (k = 0, nc = 0; k < len; k++) {
+        const vrTouch *c = &w->touches.t[run[k].k];
         set_floors(w, is, c, &is->c[nc], gc, h, v_rest, gh);
         if (!instant && w->warm.structure == w->structure) vrWarm_Start(&w->warm, c->a, c->b, h, gc, &is->c[nc]);
         nc++;
@@ -197,7 +176,7 @@ static int solve_one(vrWorld *w, Island *is, const int *parent, int r, double t,
         vrPose pose;
         mat33 inertia;
         if (vrBody_Immovable(b)) continue;
-        if (!(st = vrUpdate_Body(up, b, t))) return -1;
+        if (!(st = vrUpdate_Append(up, b, t))) return -1;
         pose = vrPose_make(st->x, st->q);
         inertia = vrBody_InertiaWorld(b, &pose);
         st->v = is->body[i].v;
@@ -224,51 +203,28 @@ static int leave_contact(vrWorld *w, const int *in_island, double t, vrUpdate *u
         vrObject *o = w->table.obj[i];
         vrBodyState *st;
         if (!o || !o->live || !o->body.contact || o->body.resting || in_island[i]) continue;
-        if (!(st = vrUpdate_Body(up, &o->body, t))) return -1;
+        if (!(st = vrUpdate_Append(up, &o->body, t))) return -1;   /* in no island: not in up */
         st->contact = 0;
         st->island = -1;
     }
     return 0;
 }
 
-/* The union-find of the touching pairs (those not leaving) over moving
- * bodies: parent[] and in_island[] set for every id of a touch and of the
- * contact set (the rest of those arrays is not read).  The moving ids of
- * the touches, each once in id order, into ids (NULL: not wanted); their
- * count. */
-static int islands_of(vrWorld *w, int *parent, int *in_island, int *ids)
-{
-    int k, n = 0;
-    for (k = 0; k < w->ncontact_ids; k++) in_island[w->contact_ids[k]] = 0;
-    for (k = 0; k < w->touches.n; k++) {
-        const vrTouch *c = &w->touches.t[k];
-        parent[c->a] = c->a, parent[c->b] = c->b;
-        in_island[c->a] = in_island[c->b] = 0;
-    }
-    for (k = 0; k < w->touches.n; k++) {
-        const vrTouch *c = &w->touches.t[k];
-        int e, x[2];
-        if (c->leaving > 0) continue;
-        if (moving(w, c->a) && moving(w, c->b)) join(parent, c->a, c->b);
-        x[0] = c->a, x[1] = c->b;
-        for (e = 0; e < 2; e++)
-            if (moving(w, x[e]) && !in_island[x[e]]) {
-                in_island[x[e]] = 1;
-                if (ids) ids[n++] = x[e];
-            }
-    }
-    if (ids) vrIds_Sort(ids, n);
-    return n;
-}
-
 static int step(vrWorld *w, int *parent, int *in_island, double t, double h, vrUpdate *up)
 {
     Island is;
-    int i, rc = 0, n = islands_of(w, parent, in_island, w->isl_ids);
+    int i, len, m, rc = 0, n = vrIsland_Union(w, parent, in_island, w->isl_ids);
+    vrRooted *g = vrIsland_Group(w, parent, &m);
+    const vrRooted *run;
     memset(&is, 0, sizeof is);
+    if (!g) return -1;
     for (i = 0; i < n && rc == 0; i++)
-        if (root(parent, w->isl_ids[i]) == w->isl_ids[i]) rc = solve_one(w, &is, parent, w->isl_ids[i], t, h, up);
+        if (vrIsland_Root(parent, w->isl_ids[i]) == w->isl_ids[i]) {
+            run = vrIsland_Run(g, m, w->isl_ids[i], &len);
+            rc = solve_one(w, &is, run, len, w->isl_ids[i], t, h, up);
+        }
     if (rc == 0) rc = leave_contact(w, in_island, t, up);
+    free(g);
     free(is.id);
     free(is.body);
     free(is.c);
@@ -289,13 +245,17 @@ static int gather(vrWorld *w, double t, double h, char *err, size_t n)
 static int instant(vrWorld *w, int *parent, int *in_island, double t, int a, int b, vrUpdate *up)
 {
     Island is;
-    int ra, rb, rc = 0;
+    int ra, rb, m, len, rc = 0;
+    vrRooted *g;
+    const vrRooted *run;
     memset(&is, 0, sizeof is);
-    islands_of(w, parent, in_island, NULL);   /* the pair (a, b) is one of the touches */
-    ra = a >= 0 && moving(w, a) ? root(parent, a) : -1;   /* a, b < 0: no pair (clang-tidy) */
-    rb = b >= 0 && moving(w, b) ? root(parent, b) : -1;
-    if (ra >= 0) rc = solve_one(w, &is, parent, ra, t, 0, up);
-    if (rc == 0 && rb >= 0 && rb != ra) rc = solve_one(w, &is, parent, rb, t, 0, up);
+    vrIsland_Union(w, parent, in_island, NULL);   /* the pair (a, b) is one of the touches */
+    if (!(g = vrIsland_Group(w, parent, &m))) return -1;
+    ra = a >= 0 && vrIsland_Moves(w, a) ? vrIsland_Root(parent, a) : -1;   /* a, b < 0: no pair (clang-tidy) */
+    rb = b >= 0 && vrIsland_Moves(w, b) ? vrIsland_Root(parent, b) : -1;
+    if (ra >= 0) run = vrIsland_Run(g, m, ra, &len), rc = solve_one(w, &is, run, len, ra, t, 0, up);
+    if (rc == 0 && rb >= 0 && rb != ra) run = vrIsland_Run(g, m, rb, &len), rc = solve_one(w, &is, run, len, rb, t, 0, up);
+    free(g);
     free(is.id);
     free(is.body);
     free(is.c);

@@ -9,7 +9,7 @@
  * and with static bodies unscheduled.  When anything changes a body of a
  * resting island (a response, an edit, a moving body touching it at an
  * island step), the whole island wakes.
- *   in_update          a body's state in an update, if there
+ *   in_first, state_once  a body's state in an update, if there (or added)
  *   wake_islands       every resting body of the given islands, woken
  *   qualifies, rests   one body's part of the rest test
  *   vrRest_*           the coordinator's calls (rest.h)
@@ -25,24 +25,36 @@
 #define REST_FRAMES 2            /* frames in a row: a body rocking on an edge, turning back
                                     within one frame, must not be caught there */
 
-static const vrBodyState *in_update(const vrUpdate *up, int id)
+/* body id's state among the first n of up */
+static vrBodyState *in_first(const vrUpdate *up, int n, int id)
 {
     int i;
-    for (i = 0; i < up->n; i++)
+    for (i = 0; i < n; i++)
         if (up->body[i].id == id) return &up->body[i];
     return NULL;
+}
+
+static const vrBodyState *in_update(const vrUpdate *up, int id) { return in_first(up, up->n, id); }
+
+/* vrUpdate_Body for bodies met once each: only the n states up held
+ * before are searched (the bodies added since are others), so that
+ * 10,000 bodies put to rest or woken at once are not quadratic */
+static vrBodyState *state_once(vrUpdate *up, int n, vrBody *b, double t)
+{
+    vrBodyState *st = in_first(up, n, b->id);
+    return st ? st : vrUpdate_Append(up, b, t);
 }
 
 /* the live resting bodies whose island has mark[island] set wake: their
  * states join up (at t), resting no more */
 static int wake_islands(vrWorld *w, const unsigned char *mark, vrUpdate *up, double t)
 {
-    int i;
+    int i, n = up->n;
     for (i = 0; i < w->table.n; i++) {
         vrObject *x = w->table.obj[i];
         vrBodyState *st;
         if (!x || !x->live || !x->body.resting || x->body.island < 0 || !mark[x->body.island]) continue;
-        st = vrUpdate_Body(up, &x->body, t);
+        st = state_once(up, n, &x->body, t);
         if (!st) return -1;
         st->resting = 0;
     }
@@ -132,7 +144,7 @@ static int rests(const vrWorld *w, const vrObject *o)
 int vrRest_FrameEnd(vrWorld *w, vrUpdate *up)
 {
     unsigned char *fails;
-    int k;
+    int k, n = up->n;
     /* SPEC 8: while the hand holds a body nothing starts to rest: a body
      * lying on the held one, frozen, would hang in the air when the hand
      * moves it away (a kinematic body wakes what it meets, not what it
@@ -154,8 +166,8 @@ int vrRest_FrameEnd(vrWorld *w, vrUpdate *up)
         vrObject *o = w->table.obj[i];
         vrBodyState *st;
         if (!o || !o->live || o->body.is_static || o->body.resting || o->body.island < 0) continue;
-        if (fails[o->body.island] || in_update(up, i)) continue;
-        st = vrUpdate_Body(up, &o->body, w->t);
+        if (fails[o->body.island] || in_first(up, n, i)) continue;
+        st = vrUpdate_Append(up, &o->body, w->t);   /* each id once in the set, not in up's first n */
         if (!st) {
             free(fails);
             return -1;
