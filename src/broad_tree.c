@@ -19,6 +19,9 @@ enum { IN_NONE, IN_MOVING, IN_FIXED };
  * leaves costs about as much as a few frames' loss to a loose tree */
 #define LOOSE 1.5
 
+/* the tree of a box: a static or resting body's, kept for good, is fixed */
+static int in_of(const vrBox *x) { return x->frame == VR_BOX_FOR_GOOD ? IN_FIXED : IN_MOVING; }
+
 static vrTree *tree_of(vrBroadphase *bp, int id) { return bp->leaf[id].in == IN_FIXED ? &bp->fixed : &bp->moving; }
 
 static vrAabb aabb_of(const vrBox *x)
@@ -63,22 +66,22 @@ static int same_aabb(const vrAabb *a, const vrAabb *b)
 
 /* body id's new box x in its leaf; 1 when it has none yet (it goes in
  * after the refit, which needs the old inner boxes around the old leaves) */
-static int place(vrBroadphase *bp, int id, const vrBox *x, int is_static)
+static int place(vrBroadphase *bp, int id, const vrBox *x)
 {
     struct vrLeafRef *r = &bp->leaf[id];
     vrAabb a = aabb_of(x);
-    if (r->in != IN_NONE && r->in != (is_static ? IN_FIXED : IN_MOVING)) drop(bp, id);
+    if (r->in != IN_NONE && r->in != in_of(x)) drop(bp, id);
     if (r->in == IN_NONE) return 1;
     if (r->in == IN_MOVING) vrTree_SetLeaf(&bp->moving, r->node, &a);
     else if (!same_aabb(&bp->fixed.node[r->node].box, &a)) vrTree_Refit(&bp->fixed, r->node, &a);   /* d changed */
     return 0;
 }
 
-static int insert_late(vrBroadphase *bp, vrBody *const *body, int nlate)
+static int insert_late(vrBroadphase *bp, int nlate)
 {
     int i;
     for (i = 0; i < nlate; i++) {
-        int id = bp->late[i], in = body[id]->is_static ? IN_FIXED : IN_MOVING;
+        int id = bp->late[i], in = in_of(&bp->box[id]);
         vrAabb a = aabb_of(&bp->box[id]);
         int node = vrTree_Insert(in == IN_FIXED ? &bp->fixed : &bp->moving, &a, id);
         if (node < 0) return -1;    /* the others are late again next frame */
@@ -124,12 +127,12 @@ static int make_leaves(vrBroadphase *bp, vrBody *const *body, int nbody)
         if (!x->valid) {
             drop(bp, i);
             bp->odd[bp->nodd++] = i;
-        } else if (place(bp, i, x, body[i]->is_static)) {
+        } else if (place(bp, i, x)) {
             bp->late[nlate++] = i;
         }
     }
     vrTree_RefitAll(&bp->moving);
-    if (insert_late(bp, body, nlate) != 0) return -1;
+    if (insert_late(bp, nlate) != 0) return -1;
     keep_tight(bp);
     return 0;
 }

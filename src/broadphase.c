@@ -18,8 +18,10 @@ void vrBroad_Init(vrBroadphase *bp)
 
 void vrBroad_SetKind(vrBroadphase *bp, vrBroadKind kind)
 {
+    int i;
     if (kind == bp->kind) return;
     vrBroadTree_Free(bp);
+    for (i = 0; i < bp->cap; i++) bp->box[i].frame = -1;   /* a resting body's box is kept by the trees only */
     bp->kind = kind;
     bp->stale = 1;
     bp->near_frame = -1;
@@ -98,6 +100,10 @@ static void make_box(vrBroadphase *bp, vrBody *const *body, int id)
         if (!(t1 <= bp->T)) return;
         vrBody_PathBox(b, t1, bp->T, &x->lo, &x->hi);
         pad = b->r_out;
+        /* the trees keep a resting body's box, as a static one's, until an
+         * update wakes it (vrBroad_Rebox): 10,000 cubes at rest on a floor
+         * are not boxed, refitted and met again every frame */
+        if (b->resting && bp->kind == VR_BROAD_TREE) x->frame = VR_BOX_FOR_GOOD;
     }
     size = fmax(vec3_maxabs(x->lo), vec3_maxabs(x->hi));
     pad += 0.5 * bp->d + 1e-9 + 1e-12 * size;   /* far above the rounding of a position */

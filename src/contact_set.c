@@ -36,12 +36,28 @@ int vrContactSet_Note(vrWorld *w, int id)
     return 0;
 }
 
-void vrContactSet_Lost(vrWorld *w) { w->contact_structure = w->structure - 1; }
+void vrContactSet_Lost(vrWorld *w)
+{
+    w->contact_structure = w->structure - 1;
+    w->applied++;
+}
 
+/* A resting body leaves the set: no island step or rest test has
+ * anything to do with it, and 10,000 cubes at rest on a floor were
+ * sorted and visited at every frame end.  An update wakes it, and an
+ * update applied with contact set notes it again. */
 static int in_contact(const vrWorld *w, int id)
 {
     const vrObject *o = id >= 0 && id < w->table.n ? w->table.obj[id] : NULL;
-    return o && o->live && o->body.contact;
+    return o && o->live && o->body.contact && !o->body.resting;
+}
+
+static int ascending(const int *ids, int n)
+{
+    int i;
+    for (i = 1; i < n; i++)
+        if (ids[i - 1] > ids[i]) return 0;
+    return 1;
 }
 
 /* every live body in contact, from the whole table */
@@ -59,7 +75,7 @@ int vrContactSet_Prune(vrWorld *w)
 {
     int i, k = 0;
     if (w->contact_structure != w->structure) return rescan(w);
-    vrIds_Sort(w->contact_ids, w->ncontact_ids);
+    if (!ascending(w->contact_ids, w->ncontact_ids)) vrIds_Sort(w->contact_ids, w->ncontact_ids);
     for (i = 0; i < w->ncontact_ids; i++) {
         int id = w->contact_ids[i];
         if ((k == 0 || w->contact_ids[k - 1] != id) && in_contact(w, id)) w->contact_ids[k++] = id;

@@ -12,8 +12,9 @@ int vrContactSet_Note(vrWorld *w, int id);
 /* states were applied behind the set's back (a frame undone): the next
  * prune finds it again from every object */
 void vrContactSet_Lost(vrWorld *w);
-/* the set sorted by id, each id once, only live bodies in contact: every
- * such body of the table (found from all of them when w->structure moved) */
+/* the set sorted by id, each id once, only live bodies in contact and not
+ * resting: every such body of the table (found from all of them when
+ * w->structure moved) */
 int vrContactSet_Prune(vrWorld *w);
 /* w's isl_* arrays hold every object id (isl_slot's new entries -1) */
 int vrIslandScratch_Reserve(vrWorld *w);

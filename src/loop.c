@@ -87,12 +87,16 @@ static double contact_point(double ts, double T, long k, long steps)
     return k >= steps ? T : ts + (T - ts) * (double)k / (double)steps;
 }
 
-/* an island step is needed while some dynamic body can move */
-static int moving_bodies(const vrWorld *w)
+/* An island step is needed while some dynamic body can move.  "None" is
+ * kept until a state is applied or the structure moves: a look at 10,000
+ * bodies at rest at every contact step was a cache miss each. */
+static int moving_bodies(vrWorld *w)
 {
     int i;
+    if (w->still_structure == w->structure && w->still_applied == w->applied) return 0;
     for (i = 0; i < w->ndyn; i++)
         if (!w->dyn[i]->resting) return 1;
+    w->still_structure = w->structure, w->still_applied = w->applied;
     return 0;
 }
 

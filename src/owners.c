@@ -91,6 +91,7 @@ int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up)
     vrFlight f = vrSettings_Flight(&w->s);
     int i;
     if (up->n == 0) return 0;
+    w->applied++;
     if (vrRest_WakeDependents(w, up, up->body[0].t) != 0) return -1;
     for (i = 0; i < up->n; i++) {
         vrRest_KeepFramePose(w, w->table.obj[up->body[i].id]);   /* before its anchor moves */

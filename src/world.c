@@ -19,6 +19,7 @@ vrWorld *vrWorld_Create(void)
     w->s = vrSettings_Default();
     w->instant_t = -INFINITY;
     w->contact_structure = -1;   /* the contact set is found at the first island step */
+    w->still_structure = -1;
     vrUpdate_Init(&w->update);
     vrUpdate_Init(&w->pending);
     vrSplitmix_Seed(&w->rng, w->s.seed);
@@ -79,6 +80,7 @@ void vrWorld_Restart(vrWorld *w)
     w->instant = 0;
     w->instant_t = -INFINITY;
     w->contact_structure = -1;   /* the contact set is found at the first island step */
+    w->still_structure = -1;
     vrWorld_ClearTracker(w, VR_DEVICE_HEAD);   /* track time was time since `track` */
     vrWorld_ClearTracker(w, VR_DEVICE_HAND);
     vrSounds_Clear(&w->sounds);

@@ -77,6 +77,11 @@ struct vrWorld {
     int *contact_ids;
     int ncontact_ids, contact_idcap;
     long contact_structure;
+    /* loop.c: every dynamic body rested when structure was still_structure
+     * and applied still_applied (applied counts the updates applied and
+     * the frames undone, vrWorld_ApplyUpdate and vrContactSet_Lost) */
+    long long applied, still_applied;
+    long still_structure;
     vrIslandScratch solve_scratch;   /* the island solver's arrays (island.h) */
     int *isl_parent, *isl_in, *isl_slot, *isl_ids;
     int isl_cap;

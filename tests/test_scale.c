@@ -345,16 +345,17 @@ static int random_states(vrUpdate *u, int n, int nid, unsigned *seed, double mar
  * a table of ids, not a search per state (quadratic: 200 M comparisons at
  * a 10,000-object start), with the search's result, repeats and all; and
  * a small update by the search itself */
-/* bodies in an island's contact step missing from the contact set, which
- * island steps visit in place of every object (contact_set.c); -1 when it
- * cannot be pruned.  *in_contact: how many are in contact. */
+/* bodies in an island's contact step (in contact and awake) missing from
+ * the contact set, which island steps visit in place of every object
+ * (contact_set.c); -1 when it cannot be pruned.  *in_contact: how many
+ * are in contact and awake. */
 static int set_misses(vrWorld *w, int *in_contact)
 {
     int i, k = 0, missing = 0;
     if (vrContactSet_Prune(w) != 0) return -1;
     for (i = 0; i < w->table.n; i++) {
         const vrObject *o = w->table.obj[i];
-        if (!o || !o->live || !o->body.contact) continue;
+        if (!o || !o->live || !o->body.contact || o->body.resting) continue;
         (*in_contact)++;
         while (k < w->ncontact_ids && w->contact_ids[k] < i) k++;
         missing += !(k < w->ncontact_ids && w->contact_ids[k] == i);
