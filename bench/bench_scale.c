@@ -21,6 +21,12 @@
  *             the world is empty (a start before the room is built), so a
  *             worker's peak is its own, not the room it would inherit.
  *
+ *   floor     N cubes of 0.2 m on one static floor, 0.5 m apart (each its
+ *             own island, as a user's 10,000 blocks on a table), let go
+ *             0.5 mm above it: the landing (the first FLOOR_FRAMES frames,
+ *             every cube in contact, then put to rest) and as many frames
+ *             after, all at rest; frames/s of each and peak memory
+ *
  * Prints tables and `csv,` lines; asserts nothing. */
 #define _DEFAULT_SOURCE
 #include <dirent.h>
@@ -129,6 +135,93 @@ static Result measure(int n, double side, int gps, const char *url, int frames)
     return r;
 }
 
+/* ---- floor ---- */
+#define FLOOR_FRAMES 40
+
+/* n cubes on a grid over a static floor, started; NULL when refused */
+static vrWorld *floor_of_cubes(int n)
+{
+    vrWorld *w = vrWorld_Create();
+    vrSettings s = *vrWorld_Settings(w);
+    char err[256] = "", name[32];
+    int side = 1, i, failed;
+    while (side * side < n) side++;
+    s.time_step = 0.05;
+    s.collision_dist = 0.01;
+    s.force_dir[0] = 0, s.force_dir[1] = 0, s.force_dir[2] = -1;
+    s.force_mag = 9.8;
+    s.default_friction = 0.5;
+    s.default_elasticity = 0;
+    failed = vrWorld_SetSettings(w, &s, err, sizeof err) != 0;
+    for (i = -1; i < n && !failed; i++) {
+        vrObjectDef d = vrObjectDef_Default(VR_CUBE);
+        vrObjectId id;
+        snprintf(name, sizeof name, i < 0 ? "floor" : "c%d", i);
+        d.size[0] = d.size[1] = d.size[2] = i < 0 ? 0.5 * side + 1.0 : 0.1;
+        if (i < 0) d.translate[2] = -d.size[2], d.mass = -1, d.mass_set = 1;
+        else d.translate[0] = 0.5 * (i % side), d.translate[1] = 0.5 * (i / side), d.translate[2] = 0.1005;
+        if (i < 0) d.translate[0] = d.translate[1] = 0.25 * side;
+        failed = vrWorld_CreateObject(w, name, VR_CUBE, &id, err, sizeof err) != 0
+                 || vrWorld_SetObjectDef(w, id, &d, err, sizeof err) != 0;
+    }
+    if (failed || vrWorld_Start(w, err, sizeof err) != 0) {
+        fprintf(stderr, "bench_scale: floor of %d: %s\n", n, err);
+        vrWorld_Destroy(w);
+        return NULL;
+    }
+    return w;
+}
+
+/* frames/s of the landing (out[0]), at rest (out[1]); the cubes at rest
+ * at the end (out[2]); peak MB (out[3]) */
+static void floor_child(const void *ctx, void *out)
+{
+    double *r = out;
+    vrWorld *w = floor_of_cubes(*(const int *)ctx);
+    vrStats a, b, c;
+    char err[256];
+    if (!w) return;
+    vrWorld_GetStats(w, &a);
+    if (vrWorld_Step(w, FLOOR_FRAMES, err, sizeof err) == 0) {
+        vrWorld_GetStats(w, &b);
+        if (vrWorld_Step(w, FLOOR_FRAMES, err, sizeof err) == 0) {
+            vrWorld_GetStats(w, &c);
+            r[0] = 1000.0 * FLOOR_FRAMES / (b.sim_ms - a.sim_ms);
+            r[1] = 1000.0 * FLOOR_FRAMES / (c.sim_ms - b.sim_ms);
+            r[2] = c.resting;
+            r[3] = (double)vrPeakMem_Kb(0) / 1024.0;
+        }
+    }
+    vrWorld_Destroy(w);
+}
+
+static int by_double(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return a < b ? -1 : a > b;
+}
+
+static void floor_table(void)
+{
+    static const int sizes[] = {2500, 10000};
+    size_t k;
+    printf("\ncubes on a floor, each its own island: %d frames of 0.05 s landing, %d at rest, median of %d children\n",
+           FLOOR_FRAMES, FLOOR_FRAMES, RUNS);
+    printf("%8s %14s %14s %10s %10s\n", "cubes", "landing fps", "at rest fps", "resting", "peak MB");
+    for (k = 0; k < sizeof sizes / sizeof sizes[0]; k++) {
+        double r[RUNS][4], land[RUNS], rest[RUNS];
+        int i;
+        for (i = 0; i < RUNS; i++) {
+            bench_in_child(floor_child, &sizes[k], r[i], sizeof r[i]);
+            land[i] = r[i][0], rest[i] = r[i][1];
+        }
+        qsort(land, RUNS, sizeof land[0], by_double);
+        qsort(rest, RUNS, sizeof rest[0], by_double);
+        printf("%8d %14.1f %14.1f %10.0f %10.1f\n", sizes[k], land[RUNS / 2], rest[RUNS / 2], r[0][2], r[0][3]);
+        printf("csv,floor,%d,%.2f,%.2f,%.0f,%.1f\n", sizes[k], land[RUNS / 2], rest[RUNS / 2], r[0][2], r[0][3]);
+    }
+}
+
 typedef struct Args { int n, gps, frames; double side; const char *url; } Args;
 
 static void measure_child(const void *ctx, void *out)
@@ -212,7 +305,8 @@ int main(int argc, char **argv)
 {
     enter_namespace(argc, argv);    /* udpm stays inside a private network namespace */
     setvbuf(stdout, NULL, _IOLBF, 0);
-    if (argc < 2 || strcmp(argv[1], "workers") != 0) scale_table();
-    if (argc < 2 || strcmp(argv[1], "scale") != 0) workers_table();
+    if (argc < 2 || strcmp(argv[1], "scale") == 0) scale_table();
+    if (argc < 2 || strcmp(argv[1], "floor") == 0) floor_table();
+    if (argc < 2 || strcmp(argv[1], "workers") == 0) workers_table();
     return 0;
 }
