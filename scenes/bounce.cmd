@@ -7,9 +7,11 @@
 # them like a cushion (carried by several balls at once); the yellow one
 # strikes the tray's rim, jostles its balls and tumbles to the floor.  The
 # balls bounce, lose energy on the furniture (elasticity 0.6) and settle
-# again on the chair and the pedestal: all ten rest from frame 300 (3 s),
-# the white pillow from frame 830.  The room, chair and pedestal (23 pieces)
-# are static models of real things (real = 1).
+# again on the chair and the pedestal: all ten rest from frame 925 (9.25
+# s; by 3 s all but four, which slide a few cm/s on the frictionless seat
+# and tray until a rail stops them), the white pillow from frame 816.
+# The room, chair and pedestal (23 pieces) are static models of real
+# things (real = 1).
 #
 #   objects 35 (12 dynamic + 23 static), pairs 342 (66 + 12 x 23)
 #   subframes_thesis = ceil(0.01 * 2 * 2.95 / 0.01) = 6        (table 5.1)
@@ -20,7 +22,9 @@
 # else would stop them.
 #
 # Run:   vroc scenes/bounce.cmd    (max_frames = 600 frames, 6 s: the yellow
-#                                    pillow slides on the floor, never rests)
+#                                    pillow slides on the floor, never rests;
+#                                    `max_frames = 1100` first to see every
+#                                    ball come to rest)
 # View:  printf 'frames = /tmp/bounce\nread scenes/bounce.cmd\n' | vroc
 #        tools/contact-sheet /tmp/bounce bounce.png
 
