@@ -37,9 +37,11 @@ eye = (0.1, -2.3, 2.0)
 look = (0.1, 0.5, 0.75)
 
 # ---- the room: floor at z = 0, walls on four sides ----
+# (the floor reaches the front wall: when it stopped at y = -2, the yellow
+# pillow slid off its edge at 9.7 s and fell out of the room)
 cube floor
-  size = (2, 2, 0.05)
-  translate = (0, 0, -0.05)
+  size = (2, 3, 0.05)
+  translate = (0, -1, -0.05)
   mass = -1
   elasticity = 0.6
   real = 1

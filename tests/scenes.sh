@@ -257,12 +257,11 @@ story office office_cuboid_falls_from_the_shelf_onto_the_table '
         if (off < 2) print off " of the table objects knocked off the table, expected at least 2" }'
 
 # ---- bounce: the pillows hit the balls, which settle on the chair and pedestal ----
-run bounce 600 20
+run bounce 1100 20
 loads bounce
 from_the_command_line bounce
 counts bounce 35 12 342 6
 never_inside bounce
-run bounce 1100 20      # the balls' story, told to its end (below)
 story bounce bounce_balls_settle_again_on_the_chair_and_pedestal '
     END { n = 0; moved = 0
         for (o in fin) { if (o !~ /^ball/) continue
