@@ -73,7 +73,8 @@ static int place(vrBroadphase *bp, int id, const vrBox *x)
     if (r->in != IN_NONE && r->in != in_of(x)) drop(bp, id);
     if (r->in == IN_NONE) return 1;
     if (r->in == IN_MOVING) vrTree_SetLeaf(&bp->moving, r->node, &a);
-    else if (!same_aabb(&bp->fixed.node[r->node].box, &a)) vrTree_Refit(&bp->fixed, r->node, &a);   /* d changed */
+    else if (!same_aabb(&bp->fixed.node[r->node].box, &a))   /* d changed, or a resting body boxed again */
+        vrTree_Refit(&bp->fixed, r->node, &a);
     return 0;
 }
 
