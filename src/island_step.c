@@ -128,7 +128,8 @@ static int add_contact(Island *is, const vrTouch *k, int ia, int ib, double mu)
 static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrIslandContact *c, double gc, double h,
                        double v_rest, vec3 gh)
 {
-    /* NOLINTNEXTLINE(clang-analyzer-core.NullDereference): solve_one's first loop added a contact for each touch its second gives here */
+    /* NOLINTBEGIN(clang-analyzer-core.NullDereference): solve_one's first loop added both bodies of
+     * each touch its second gives here (the analyzer does not know that slot is -1 between islands) */
     const vrIslandBody *A = &is->body[c->a], *B = &is->body[c->b];
     double e = fmin(w->table.obj[k->a]->body.elasticity, w->table.obj[k->b]->body.elasticity);
     double lift = vec3_dot(c->n, vec3_sub(B->dynamic ? gh : vec3_zero(), A->dynamic ? gh : vec3_zero()));
@@ -141,6 +142,7 @@ static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrI
         double allow = k->leaving < 0 || h == 0 ? 0 : vr_max(0, k->gap[i] - gc) / h;
         c->floor[i] = u < -(v_rest + allow) ? -e * u : -allow;
     }
+    /* NOLINTEND(clang-analyzer-core.NullDereference) */
 }
 
 /* the island of root r: its contacts (the touches of run), solved; its
