@@ -39,6 +39,7 @@
 #include "vroc.h"
 #include "../tests/netns.h"
 #include "in_child.h"
+#include "figures.h"
 #include "../tests/peak_mem.h"
 
 #define FRAMES 20
@@ -195,12 +196,6 @@ static void floor_child(const void *ctx, void *out)
     vrWorld_Destroy(w);
 }
 
-static int by_double(const void *x, const void *y)
-{
-    double a = *(const double *)x, b = *(const double *)y;
-    return a < b ? -1 : a > b;
-}
-
 static void floor_table(void)
 {
     static const int sizes[] = {2500, 10000};
@@ -209,16 +204,15 @@ static void floor_table(void)
            FLOOR_FRAMES, FLOOR_FRAMES, RUNS);
     printf("%8s %14s %14s %10s %10s\n", "cubes", "landing fps", "at rest fps", "resting", "peak MB");
     for (k = 0; k < sizeof sizes / sizeof sizes[0]; k++) {
-        double r[RUNS][4], land[RUNS], rest[RUNS];
+        double r[RUNS][4], land[RUNS], rest[RUNS], ml, mr;
         int i;
         for (i = 0; i < RUNS; i++) {
             bench_in_child(floor_child, &sizes[k], r[i], sizeof r[i]);
             land[i] = r[i][0], rest[i] = r[i][1];
         }
-        qsort(land, RUNS, sizeof land[0], by_double);
-        qsort(rest, RUNS, sizeof rest[0], by_double);
-        printf("%8d %14.1f %14.1f %10.0f %10.1f\n", sizes[k], land[RUNS / 2], rest[RUNS / 2], r[0][2], r[0][3]);
-        printf("csv,floor,%d,%.2f,%.2f,%.0f,%.1f\n", sizes[k], land[RUNS / 2], rest[RUNS / 2], r[0][2], r[0][3]);
+        ml = bench_median(land, RUNS), mr = bench_median(rest, RUNS);
+        printf("%8d %14.1f %14.1f %10.0f %10.1f\n", sizes[k], ml, mr, r[0][2], r[0][3]);
+        printf("csv,floor,%d,%.2f,%.2f,%.0f,%.1f\n", sizes[k], ml, mr, r[0][2], r[0][3]);
     }
 }
 

@@ -56,12 +56,18 @@ void vrBody_CaptureAnchor(const vrBody *b, vrBodyState *st)
     st->clamped = 0;
 }
 
-vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t)
+vrBodyState *vrUpdate_Find(const vrUpdate *u, int n, int id)
 {
     int i;
-    for (i = 0; i < u->n; i++)
-        if (u->body[i].id == b->id) return &u->body[i];
-    return vrUpdate_Append(u, b, t);
+    for (i = 0; i < n && i < u->n; i++)
+        if (u->body[i].id == id) return &u->body[i];
+    return NULL;
+}
+
+vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t)
+{
+    vrBodyState *st = vrUpdate_Find(u, u->n, b->id);
+    return st ? st : vrUpdate_Append(u, b, t);
 }
 
 vrBodyState *vrUpdate_Append(vrUpdate *u, vrBody *b, double t)

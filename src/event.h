@@ -73,6 +73,9 @@ void vrUpdate_Init(vrUpdate *u);
 void vrUpdate_Free(vrUpdate *u);
 /* the slot of body id in u, added as a capture of b at time t if absent */
 vrBodyState *vrUpdate_Body(vrUpdate *u, vrBody *b, double t);
+/* body id's first state among u's first n, or NULL (a caller that adds
+ * each body once searches only the states u held before it began) */
+vrBodyState *vrUpdate_Find(const vrUpdate *u, int n, int id);
 /* ...added without the search, for a caller that knows b is not in u (a
  * body at a time into an update of many: the search made it quadratic) */
 vrBodyState *vrUpdate_Append(vrUpdate *u, vrBody *b, double t);

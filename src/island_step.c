@@ -157,8 +157,9 @@ static int solve_one(vrWorld *w, Island *is, const vrRooted *run, int len, int r
     is->n = is->nc = 0;
     for (k = 0; k < len; k++) {
         const vrTouch *c = &w->touches.t[run[k].k];
+        double mu = sqrt(w->table.obj[c->a]->body.friction * w->table.obj[c->b]->body.friction);
         int ia = add_body(is, w->isl_slot, c->a), ib = ia < 0 ? -1 : add_body(is, w->isl_slot, c->b);
-        if (ib < 0 || add_contact(is, c, ia, ib, sqrt(w->table.obj[c->a]->body.friction * w->table.obj[c->b]->body.friction)) != 0) break;
+        if (ib < 0 || add_contact(is, c, ia, ib, mu) != 0) break;
     }
     for (i = 0; i < is->n; i++) w->isl_slot[is->id[i]] = -1;   /* as it was: -1 everywhere */
     if (k < len) return -1;

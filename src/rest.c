@@ -9,7 +9,7 @@
  * and with static bodies unscheduled.  When anything changes a body of a
  * resting island (a response, an edit, a moving body touching it at an
  * island step), the whole island wakes.
- *   in_first, state_once  a body's state in an update, if there (or added)
+ *   state_once         a body's state in an update, added if not there
  *   wake_islands       every resting body of the given islands, woken
  *   qualifies, rests   one body's part of the rest test
  *   vrRest_*           the coordinator's calls (rest.h)
@@ -25,23 +25,12 @@
 #define REST_FRAMES 2            /* frames in a row: a body rocking on an edge, turning back
                                     within one frame, must not be caught there */
 
-/* body id's state among the first n of up */
-static vrBodyState *in_first(const vrUpdate *up, int n, int id)
-{
-    int i;
-    for (i = 0; i < n; i++)
-        if (up->body[i].id == id) return &up->body[i];
-    return NULL;
-}
-
-static const vrBodyState *in_update(const vrUpdate *up, int id) { return in_first(up, up->n, id); }
-
 /* vrUpdate_Body for bodies met once each: only the n states up held
  * before are searched (the bodies added since are others), so that
  * 10,000 bodies put to rest or woken at once are not quadratic */
 static vrBodyState *state_once(vrUpdate *up, int n, vrBody *b, double t)
 {
-    vrBodyState *st = in_first(up, n, b->id);
+    vrBodyState *st = vrUpdate_Find(up, n, b->id);
     return st ? st : vrUpdate_Append(up, b, t);
 }
 
@@ -116,7 +105,7 @@ static void qualifies(vrWorld *w, const vrUpdate *up, vrObject *o)
     double dt = w->s.time_step, dx, turn, motion;
     int rise, still, slow;
     vrPose p;
-    if (!b->contact || b->hit || b->island < 0 || !o->have_frame_pose || in_update(up, b->id)) {
+    if (!b->contact || b->hit || b->island < 0 || !o->have_frame_pose || vrUpdate_Find(up, up->n, b->id)) {
         o->quiet_frames = o->slow_frames = 0;
         return;
     }
@@ -166,7 +155,7 @@ int vrRest_FrameEnd(vrWorld *w, vrUpdate *up)
         vrObject *o = w->table.obj[i];
         vrBodyState *st;
         if (!o || !o->live || o->body.is_static || o->body.resting || o->body.island < 0) continue;
-        if (fails[o->body.island] || in_first(up, n, i)) continue;
+        if (fails[o->body.island] || vrUpdate_Find(up, n, i)) continue;
         st = vrUpdate_Append(up, &o->body, w->t);   /* each id once in the set, not in up's first n */
         if (!st) {
             free(fails);
