@@ -71,7 +71,7 @@ typedef struct vrBody {
                                        step: flies without the global force (island.h) */
     int island;                     /* its island at the last island step or rest (the
                                        island's lowest body id), -1 none */
-    int hit;                        /* an impulse hit it in the current frame */
+    int hit;                        /* an impulse jolted it in the current frame (vrBody_Jolted) */
     int kinematic;                  /* held by the hand (SPEC 8, grab.h): it follows the hand,
                                        infinite mass to others, no force, never rests; m.L
                                        holds its world angular velocity, not a momentum */
@@ -95,6 +95,19 @@ typedef struct vrFlight {
  * counted, one cut was two, and a ball spinning at the cap on a
  * frictionless floor was "cut" again at one island step in five. */
 static inline int vrFlight_OverCap(double speed, double cap) { return speed > cap * (1 + 1e-12); }
+
+/* An impulse hits a body (its `hit`, which keeps it from resting that
+ * frame, rest.c) when it changes the speed of some point of it by v_rest
+ * (SPEC 7: the speed of a fall through g_c) or more: |dv| + |dw| r_out
+ * bounds that change.  A slower tap is how the contacts of a pile hold
+ * it between contact steps: counted as a hit, the taps of mm/s that a
+ * settled pile of 300 takes every frame somewhere kept its one island
+ * awake for ever.  A bounce, or a body stopped from v_rest or faster,
+ * is a hit; without gravity v_rest is 0 and every impulse is one. */
+static inline int vrBody_Jolted(vec3 dv, vec3 dw, double r_out, double v_rest)
+{
+    return vec3_len(dv) + vec3_len(dw) * r_out >= v_rest;
+}
 
 /* motion.c */
 void vrBody_SetMassProperties(vrBody *b, double mass, const mat33 *inertia_unit, double r_in, double r_out);

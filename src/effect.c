@@ -12,6 +12,7 @@ typedef struct vrResponding {
     vrBody **body;
     vrResponder *responder;
     const vrFlight *flight;
+    double v_rest;       /* a smaller change of speed is a tap, not a hit (vrBody_Jolted) */
 } vrResponding;
 
 static void impact_body(vrBody *b, double t, vec3 c, vrImpactBody *ib)
@@ -67,7 +68,7 @@ static int kick(const vrResponding *o, vrUpdate *up, vrBody *b, const vrEvent *e
     st->v = v;
     st->L = b->rot == VR_ROT_NONE && vec3_len2(w) == 0 ? vec3_zero() : mat33_mulv(&ib->inertia, w);
     st->resting = 0;
-    st->hit = 1;
+    st->hit = st->hit || vrBody_Jolted(vec3_sub(v, ib->v), vec3_sub(w, ib->w), b->r_out, o->v_rest);
     return 0;
 }
 
@@ -228,11 +229,13 @@ static int respond(const vrResponding *o, const vrEvent *ev, vrUpdate *up)
     }
 }
 
-int vrEffect_Compute(vrBody **body, vrResponder *responder, const vrFlight *flight, const vrEvent *ev, vrUpdate *up)
+int vrEffect_Compute(vrBody **body, vrResponder *responder, const vrFlight *flight, double v_rest, const vrEvent *ev,
+                     vrUpdate *up)
 {
     vrResponding o;
     o.body = body;
     o.responder = responder;
     o.flight = flight;
+    o.v_rest = v_rest;
     return respond(&o, ev, up);
 }

@@ -12,6 +12,7 @@
  * velocities after an impulse (ev->e and ev->mu, at ev->c along ev->n, spin
  * clamped at flight->max_angular), positions after a push-out.  -1 when the
  * impulse solve fails or memory runs out. */
-int vrEffect_Compute(vrBody **body, vrResponder *responder, const vrFlight *flight, const vrEvent *ev, vrUpdate *up);
+int vrEffect_Compute(vrBody **body, vrResponder *responder, const vrFlight *flight, double v_rest, const vrEvent *ev,
+                     vrUpdate *up);
 
 #endif

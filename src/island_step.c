@@ -184,13 +184,14 @@ static int solve_one(vrWorld *w, Island *is, const vrRooted *run, int len, int r
         if (!(st = vrUpdate_Append(up, b, t))) return -1;
         pose = vrPose_make(st->x, st->q);
         inertia = vrBody_InertiaWorld(b, &pose);
+        if (instant) {          /* an answer to a response: flight as it was */
+            vec3 w0 = mat33_mulv(&is->body[i].inv_inertia, st->L);
+            st->hit = st->hit || vrBody_Jolted(vec3_sub(is->body[i].v, st->v), vec3_sub(is->body[i].w, w0), b->r_out, v_rest);
+        }
         st->v = is->body[i].v;
         st->L = mat33_mulv(&inertia, is->body[i].w);
         st->resting = 0;
-        if (instant) {          /* an answer to a response: flight as it was */
-            st->hit = 1;
-            continue;
-        }
+        if (instant) continue;
         st->contact = 1;
         st->island = r;
     }

@@ -398,7 +398,7 @@ void vrOwner_SetProgress(vrOwner *o, void (*fn)(void *ctx), void *ctx)
 
 int vrOwner_Respond(vrOwner *o, const vrEvent *ev, vrUpdate *up)
 {
-    return vrEffect_Compute(o->body, o->responder, &o->p.flight, ev, up);
+    return vrEffect_Compute(o->body, o->responder, &o->p.flight, o->v_rest, ev, up);
 }
 
 void vrOwner_Stats(const vrOwner *o, vrOwnerStats *s)

@@ -2,7 +2,8 @@
  * edge tips over and lies flat; balls, boxes, a plank on two blocks and a
  * stack placed flat come to rest on what carries them, not in it, and
  * then do not move a bit; a settled box keeps no rocking spin; what rests
- * on a body that is knocked, or deleted, wakes and falls. */
+ * on a body that is knocked, or deleted, wakes and falls; a deep pile,
+ * tapped by its own contacts between the contact steps, rests. */
 #include <string.h>
 #include "test.h"
 #include "vroc.h"
@@ -232,6 +233,43 @@ static int test_a_ball_woken_by_a_deleted_table_lands_on_the_floor(void)
     return 0;
 }
 
+/* A pile three bodies deep (120 random boxes and balls into a 3 m room,
+ * friction 0.5, e = 0.5, seed 5, as the shell's `random 120` makes them)
+ * rests as one island.  Settled, its contacts still tap some of its
+ * bodies between contact steps, at 1 to 7 mm/s; each tap counted as a
+ * hit, and a hit keeps a body (and its island) from resting that frame,
+ * so the pile was awake at 8 s, every frame solving its 120 bodies.  A
+ * hit is a change of speed of v_rest or more (vrBody_Jolted): the pile
+ * rests by 3.4 s. */
+static void deep_pile_scene(vrSettings *s)
+{
+    vrScene_ShellCaps(s);
+    s->room = 3;
+    s->collision_dist = 0.01;
+    s->time_step = 0.01;
+    s->force_mag = 9.8;
+    s->default_friction = 0.5;
+    s->default_elasticity = 0.5;
+    s->seed = 5;
+}
+
+static int test_a_deep_pile_tapped_by_its_contacts_rests(void)
+{
+    vrWorld *w = vrWorld_Create();
+    int f;
+    ENSURE(w != NULL);
+    vrScene_Set(w, deep_pile_scene);
+    ENSURE(vrWorld_AddRandom(w, 120, NULL, 0) == 0);
+    ENSURE(vrScene_Step(w, 300) == 0);
+    ENSURE(!vrWorld_AllAtRest(w));   /* still landing: the rest below is its own */
+    for (f = 300; f < 450 && !vrWorld_AllAtRest(w); f++) ENSURE(vrScene_Step(w, 1) == 0);
+    printf("    %s after %d frames (%lld contacts answered)\n", vrWorld_AllAtRest(w) ? "all 120 at rest" : "still awake", f,
+           vrScene_Stats(w).collisions);
+    ENSURE_MSG(vrWorld_AllAtRest(w), "not at rest after %d frames", f);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
 static const vrTest tests[] = {
     TEST(test_box_on_edge_tips_over_and_lies_flat),
     TEST(test_balls_and_box_come_to_rest_without_jitter),
@@ -240,6 +278,7 @@ static const vrTest tests[] = {
     TEST(test_a_ball_woken_by_a_deleted_table_lands_on_the_floor),
     TEST(test_settled_box_keeps_no_rocking_spin),
     TEST(test_stack_placed_flat_rests_at_once),
+    TEST(test_a_deep_pile_tapped_by_its_contacts_rests),
 };
 
 const vrTestSuite vrSuite_Rest = {"rest", tests, TEST_COUNT(tests), NULL, NULL, 0};
