@@ -7,9 +7,12 @@
 # objects (real = 1).  Twelve virtual objects (spheres, cubes,
 # superquadrics) start above the computers; gravity pulls them down onto
 # the monitors, towers, keyboards, printer and table, where they bounce,
-# tumble and settle: all rest by frame 150 (1.5 s).  A ball lands on a box
-# that landed on a monitor first; another clips monitor 1's edge and drops
-# beside it onto the table.
+# tumble and settle.  A ball lands on a box that landed on a monitor
+# first; another clips monitor 1's edge and drops beside it onto the
+# table, where it slides (frictionless) to and fro between the left wall
+# and workstation 1, each bounce (e = 0.6) slower, until one comes in
+# slower than v_rest (0.14 m/s) and does not bounce: all rest by frame
+# 978 (9.8 s).
 #
 #   objects 43 (12 dynamic + 31 static), pairs 438 (66 + 12 x 31)
 #   subframes_thesis = ceil(0.01 * 2 * 1.99 / 0.02) = 2        (table 5.1)

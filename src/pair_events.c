@@ -180,13 +180,24 @@ static void keep_points(const vrContact *c, vrTouch *k)
     }
 }
 
+/* what the island step's paid gravity (island_step.c: g h in the
+ * velocity of every body that can move) adds to a point's normal
+ * velocity n.(v_b - v_a) */
+static double paid_lift(const vrOwner *o, const vrPair *p, vec3 n, double h)
+{
+    vec3 gh = vec3_scale(o->p.flight.accel, h);
+    vec3 ga = vrBody_Immovable(o->body[p->a]) ? vec3_zero() : gh, gb = vrBody_Immovable(o->body[p->b]) ? vec3_zero() : gh;
+    return vec3_dot(n, vec3_sub(gb, ga));
+}
+
 /* Pair p's contact at t when it touches (within the region's level),
  * marked leaving when every point separates faster than v_eps (it flies
  * on, unless the island's solve turns it back: island_step.c), and none
  * when every point comes in faster than an impact that does not bounce
- * would once the step has closed its gap to g_c (v_rest, SPEC 3.1; v_eps
- * with no force): that is an impact, found at g_c and answered with its
- * restitution, exactly, as in free flight.  A pair that rests on some
+ * (v_rest, SPEC 3.1; v_eps with no force) and would close its gap past
+ * g_c within the step (with the step's gravity paid in, as the island
+ * step would fly it): that is an impact, found at g_c and answered with
+ * its restitution, exactly, as in free flight.  A pair that rests on some
  * points while others come in fast (a box tipping onto a face) is the
  * island's, which bounces those points (island_step.c). */
 static int touch_of(vrOwner *o, vrPair *p, double t, double h, vrTouches *out)
@@ -195,11 +206,14 @@ static int touch_of(vrOwner *o, vrPair *p, double t, double h, vrTouches *out)
     vrContact c;
     vrApproach ap;
     vrTouch *k;
+    double lift;
     int i;
     vrPair_EventQuery(o, p, t, &pa, &pb, &c);
     if (c.npoints == 0 || c.dist > o->region) return 0;
     approach(o, p, t, &pa, &pb, &c, &ap);
-    for (i = 0; h > 0 && ap.umin <= VR_V_EPS && i < c.npoints && ap.u[i] < -(o->v_rest + VR_V_EPS + vr_max(0, c.gap[i] - o->gc) / h); i++)
+    lift = h > 0 ? paid_lift(o, p, c.n, h) : 0;
+    for (i = 0; h > 0 && ap.umin <= VR_V_EPS && i < c.npoints && ap.u[i] < -(o->v_rest + VR_V_EPS)
+                && ap.u[i] + lift < -vr_max(0, c.gap[i] - o->gc) / h; i++)
         ;
     if (h > 0 && i == c.npoints) return 0;
     if (h > 0 && ap.umin <= VR_V_EPS) p->touch_t = t;

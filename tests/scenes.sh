@@ -194,7 +194,7 @@ story simple simple_balls_rest_on_the_table_top '
         if (n != 3) print n " balls" }'
 
 # ---- desks: twelve objects fall onto the workstations and the table -----------
-run desks 600 20
+run desks 1000 20
 loads desks
 from_the_command_line desks
 counts desks 43 12 438 2

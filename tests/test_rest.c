@@ -260,9 +260,9 @@ static int test_a_deep_pile_tapped_by_its_contacts_rests(void)
     ENSURE(w != NULL);
     vrScene_Set(w, deep_pile_scene);
     ENSURE(vrWorld_AddRandom(w, 120, NULL, 0) == 0);
-    ENSURE(vrScene_Step(w, 300) == 0);
+    ENSURE(vrScene_Step(w, 200) == 0);
     ENSURE(!vrWorld_AllAtRest(w));   /* still landing: the rest below is its own */
-    for (f = 300; f < 450 && !vrWorld_AllAtRest(w); f++) ENSURE(vrScene_Step(w, 1) == 0);
+    for (f = 200; f < 400 && !vrWorld_AllAtRest(w); f++) ENSURE(vrScene_Step(w, 1) == 0);
     printf("    %s after %d frames (%lld contacts answered)\n", vrWorld_AllAtRest(w) ? "all 120 at rest" : "still awake", f,
            vrScene_Stats(w).collisions);
     ENSURE_MSG(vrWorld_AllAtRest(w), "not at rest after %d frames", f);
