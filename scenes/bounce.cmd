@@ -7,9 +7,9 @@
 # them like a cushion (carried by several balls at once); the yellow one
 # strikes the tray's rim, jostles its balls and tumbles to the floor.  The
 # balls bounce, lose energy on the furniture (elasticity 0.6) and settle
-# again on the chair and the pedestal: all ten rest from frame 925 (9.25
-# s; by 3 s all but four, which slide a few cm/s on the frictionless seat
-# and tray until a rail stops them), the white pillow from frame 816.
+# again on the chair and the pedestal: all ten rest from frame 1031 (10.3
+# s; by 3 s all but two, which slide 1-3 cm/s on the frictionless seat
+# and tray until a rail stops them), the white pillow from frame 282.
 # The room, chair and pedestal (23 pieces) are static models of real
 # things (real = 1).
 #

@@ -5,7 +5,7 @@
 # 6 subframes).  The real object is the top of a table (static, real = 1);
 # three balls of different sizes and elasticities are dropped straight down
 # on it from different heights, bounce lower each time and come to rest on
-# it: all rest by frame 250 (2.5 s).  They are dropped straight: a frictionless
+# it: all rest by frame 268 (2.7 s).  They are dropped straight: a frictionless
 # ball given any sideways speed would slide off the edge.
 #
 #   objects 4 (3 dynamic + 1 static), pairs 6 (3 ball-ball + 3 ball-table)
