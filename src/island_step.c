@@ -163,6 +163,7 @@ static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrI
 static void pushed_bodies(Island *is)
 {
     int k, i;
+    if (!is->pushed) return;   /* no body added yet: no contact either */
     memset(is->pushed, 0, (size_t)is->n);
     for (k = 0; k < is->nc; k++) {
         const vrIslandContact *c = &is->c[k];
