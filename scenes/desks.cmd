@@ -12,7 +12,9 @@
 # table, where it slides (frictionless) to and fro between the left wall
 # and workstation 1, each bounce (e = 0.6) slower, until one comes in
 # slower than v_rest (0.14 m/s) and does not bounce: all rest by frame
-# 978 (9.8 s).
+# 978 (9.8 s), so a batch run stops at max_frames (600) with that ball
+# still sliding (`vroc -e 'max_frames = 1000' scenes/desks.cmd` to see
+# it stop).
 #
 #   objects 43 (12 dynamic + 31 static), pairs 438 (66 + 12 x 31)
 #   subframes_thesis = ceil(0.01 * 2 * 1.99 / 0.02) = 2        (table 5.1)
