@@ -133,13 +133,13 @@ static int add_contact(Island *is, const vrTouch *k, int ia, int ib, double mu)
  * island's, and any approach is an event. */
 
 static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrIslandContact *c, double gc, double h,
-                       double v_rest, vec3 gh)
+                       double v_rest)
 {
     /* NOLINTBEGIN(clang-analyzer-core.NullDereference): solve_one's first loop added both bodies of
      * each touch its second gives here (the analyzer does not know that slot is -1 between islands) */
     const vrIslandBody *A = &is->body[c->a], *B = &is->body[c->b];
     double e = fmin(w->table.obj[k->a]->body.elasticity, w->table.obj[k->b]->body.elasticity);
-    double lift = vec3_dot(c->n, vec3_sub(B->dynamic ? gh : vec3_zero(), A->dynamic ? gh : vec3_zero()));
+    double lift = vec3_dot(c->n, vec3_sub(B->paid, A->paid));   /* the step's gravity in n.(v_b - v_a) */
     int i;
     c->e = e;
     for (i = 0; i < c->npoints; i++) {
@@ -180,7 +180,7 @@ static int solve_one(vrWorld *w, Island *is, const vrRooted *run, int len, int r
     int instant = h == 0;
     vrParams p = vrSettings_Params(&w->s);
     vec3 gh = vec3_scale(p.flight.accel, h);
-    double gc = vrParams_Gap(&p), v_rest = sqrt(2.0 * vec3_len(p.flight.accel) * gc);
+    double gc = vrParams_Gap(&p), v_rest = vrParams_RestSpeed(&p);
     int i, k, nc;
     is->n = is->nc = 0;
     for (k = 0; k < len; k++) {
@@ -194,7 +194,7 @@ static int solve_one(vrWorld *w, Island *is, const vrRooted *run, int len, int r
     for (i = 0; i < is->n; i++) island_body(w, is->id[i], t, gh, &is->body[i]);
     for (k = 0, nc = 0; k < len; k++) {
         const vrTouch *c = &w->touches.t[run[k].k];
-        set_floors(w, is, c, &is->c[nc], gc, h, v_rest, gh);
+        set_floors(w, is, c, &is->c[nc], gc, h, v_rest);
         if (!instant && w->warm.structure == w->structure) vrWarm_Start(&w->warm, c->a, c->b, h, gc, &is->c[nc]);
         nc++;
     }

@@ -150,7 +150,7 @@ void vrOwner_SetParams(vrOwner *o, const vrParams *p)
     o->p = *p;
     o->gc = vrParams_Gap(p);
     o->region = vrParams_RegionLevel(p);
-    o->v_rest = sqrt(2.0 * vec3_len(p->flight.accel) * o->gc);
+    o->v_rest = vrParams_RestSpeed(p);
     vrBroad_SetEnvelope(&o->bp, p->d);    /* the boxes are padded by d: made anew */
     vrBroad_SetKind(&o->bp, p->use_tree ? VR_BROAD_TREE : VR_BROAD_SWEEP);
     for (i = 0; i < o->npair; i++) {

@@ -45,6 +45,12 @@ static inline double vrParams_RegionLevel(const vrParams *p)
 {
     return 2 * vrParams_Gap(p) < p->d ? 2 * vrParams_Gap(p) : p->d;
 }
+/* v_rest = sqrt(2 |a| g_c), what the force adds across the gap (SPEC 3.1,
+ * 7): slower impacts do not bounce, and smaller impulses are no hit */
+static inline double vrParams_RestSpeed(const vrParams *p)
+{
+    return sqrt(2.0 * vec3_len(p->flight.accel) * vrParams_Gap(p));
+}
 
 typedef struct vrOwnerStats {
     long long checks, heap_pops;
