@@ -240,26 +240,16 @@ static int test_a_ball_woken_by_a_deleted_table_lands_on_the_floor(void)
  * hit, and a hit keeps a body (and its island) from resting that frame,
  * so the pile was awake at 8 s, every frame solving its 120 bodies.  A
  * hit is a change of speed of v_rest or more (vrBody_Jolted): the pile
- * rests by 3.4 s. */
-static void deep_pile_scene(vrSettings *s)
-{
-    vrScene_ShellCaps(s);
-    s->room = 3;
-    s->collision_dist = 0.01;
-    s->time_step = 0.01;
-    s->force_mag = 9.8;
-    s->default_friction = 0.5;
-    s->default_elasticity = 0.5;
-    s->seed = 5;
-}
-
+ * rests at 2.7 s. */
 static int test_a_deep_pile_tapped_by_its_contacts_rests(void)
 {
-    vrWorld *w = vrWorld_Create();
+    vrSettings s = vrSettings_Default();
+    vrWorld *w;
     int f;
-    ENSURE(w != NULL);
-    vrScene_Set(w, deep_pile_scene);
-    ENSURE(vrWorld_AddRandom(w, 120, NULL, 0) == 0);
+    vrScene_ShellCaps(&s);
+    s.room = 3, s.seed = 5, s.collision_dist = 0.01, s.time_step = 0.01, s.force_mag = 9.8;
+    s.default_friction = 0.5, s.default_elasticity = 0.5;
+    ENSURE((w = vrScene_RandomRoom(&s, 120)) != NULL);
     ENSURE(vrScene_Step(w, 200) == 0);
     ENSURE(!vrWorld_AllAtRest(w));   /* still landing: the rest below is its own */
     for (f = 200; f < 400 && !vrWorld_AllAtRest(w); f++) ENSURE(vrScene_Step(w, 1) == 0);
