@@ -5,14 +5,14 @@
  *   levels, shock_pass     the ground-up pass with lower bodies held still
  *   stalled                a try's sweeps judged not to reach tol by the cap
  *   reserve_*, solve       a try's state (the caller's scratch, island.h); a try
- *   kinetic, step_energy   the energy checks' measures
- *   step_gain, pay_back    what a step's solve gains; impulses scaled back until it gains nothing
- *   solve_tries            the tries the energy check asks for, and a step's sweeping on
+ *   solve_tries            the tries the energy check (island_energy.c) asks for, and a step's
+ *                          sweeping on
  *   solve_with, vrIsland_Solve, vrIsland_SolveStep, vrIslandScratch_Free
  */
 #include <stdlib.h>
 #include <string.h>
 #include "island_contact.h"
+#include "island_energy.h"
 #include "grow.h"
 
 static double sweep(vrIslandSolve *s)
@@ -165,6 +165,7 @@ void vrIslandScratch_Free(vrIslandScratch *x)
     free(x->bounceless);
     free(x->inertia);
     free(x->bounced);
+    free(x->pushed);
     memset(x, 0, sizeof *x);
 }
 
@@ -184,7 +185,8 @@ static int reserve_bodies(vrIslandScratch *x, int n, int nc)
     return vrGrow((void **)&x->before, &x->beforecap, n, sizeof *x->before)
         || vrGrow((void **)&x->bounceless, &x->bouncelesscap, n, sizeof *x->bounceless)
         || vrGrow((void **)&x->inertia, &x->inertiacap, n, sizeof *x->inertia)
-        || vrGrow((void **)&x->bounced, &x->bouncedcap, nc, sizeof *x->bounced) ? -1 : 0;
+        || vrGrow((void **)&x->bounced, &x->bouncedcap, nc, sizeof *x->bounced)
+        || vrGrow((void **)&x->pushed, &x->pushedcap, n, sizeof *x->pushed) ? -1 : 0;
 }
 
 static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
@@ -225,143 +227,6 @@ static int solve(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact
     return 0;
 }
 
-/* the bodies' kinetic energy; inertia[i] is the inverse of body i's
- * inv_inertia, found once a solve (the energy checks measure it four
- * times, and the inverse was a tenth of their cost) */
-static double kinetic(const vrIslandBody *b, const mat33 *inertia, int n)
-{
-    double e = 0;
-    int i;
-    for (i = 0; i < n; i++) {
-        if (!b[i].dynamic) continue;
-        e += 0.5 / b[i].inv_mass * vec3_len2(b[i].v) + 0.5 * vec3_dot(b[i].w, mat33_mulv(&inertia[i], b[i].w));
-    }
-    return e;
-}
-
-/* kinetic energy less the work the force paid in does over the step's
- * flight at the velocities as they are: the step's energy but for the
- * potential energy at its start, which no impulse changes */
-static double step_energy(const vrIslandBody *b, const mat33 *inertia, int n)
-{
-    double e = kinetic(b, inertia, n);
-    int i;
-    for (i = 0; i < n; i++)
-        if (b[i].dynamic) e -= vec3_dot(b[i].paid, b[i].v) / b[i].inv_mass;
-    return e;
-}
-
-/* the step's energy after the solve less before the force was paid in,
- * when that is above SPEC 7's allowance (else 0); *C the step's loss with
- * no impulse at all, sum m |paid|^2 / 2 */
-static double step_gain(const vrIslandBody *body, const vrIslandBody *before, const mat33 *inertia, int nbody, double *C)
-{
-    double e0, R;
-    int i;
-    *C = 0;
-    for (i = 0; i < nbody; i++)
-        if (body[i].dynamic) *C += 0.5 * vec3_len2(body[i].paid) / body[i].inv_mass;
-    if (!(*C > 0)) return 0;
-    e0 = step_energy(before, inertia, nbody) + *C;           /* the kinetic energy before the force */
-    R = step_energy(body, inertia, nbody) - e0;
-    return R > 1e-9 * fmin(1.0, e0 + *C) ? R : 0;
-}
-
-/* The step's energy after the solve against before the force was paid in
- * (island.h).  When it rose by R, the impulses are scaled by s in [0, 1]:
- * with none the step loses C = sum m |paid|^2 / 2, and the step's energy
- * is convex in s, so s = C / (C + R) gains nothing (s is 1 - R / C to
- * first order: 4e-5 for the pile's worst, a resting body sinking 4e-9 m in
- * the step).  A gain within SPEC 7's 1e-9 J (and 1e-9 of the island's own
- * energy, when that is less than 1 J) is left alone: most solves of a
- * settling pile gain 1e-12 J or less, rounding, and scaled every one
- * pulled the pile's settling along another path.  Without a force there
- * is nothing to scale back to; the kinetic check's tries hold there. */
-static void pay_back(vrIslandBody *body, const vrIslandBody *before, int nbody, vrIslandContact *c, int ncontact,
-                     double R, double C)
-{
-    double s;
-    int i, k;
-    if (!(R > 0)) return;
-    s = C / (C + R);
-    for (i = 0; i < nbody; i++) {
-        body[i].v = vec3_add(before[i].v, vec3_scale(vec3_sub(body[i].v, before[i].v), s));
-        body[i].w = vec3_add(before[i].w, vec3_scale(vec3_sub(body[i].w, before[i].w), s));
-    }
-    for (i = 0; i < ncontact; i++) {
-        for (k = 0; k < c[i].npoints; k++) c[i].lambda[k] *= s;
-        c[i].friction = vec3_scale(c[i].friction, s), c[i].twist *= s;
-    }
-}
-
-/* the floors cut to <= 0: the bounces go; bounced[i] = 1 for a contact
- * that had one */
-static void no_bounces(vrIslandContact *c, int ncontact, int *bounced)
-{
-    int i, k;
-    for (i = 0; i < ncontact; i++) {
-        bounced[i] = 0;
-        for (k = 0; k < c[i].npoints; k++) {
-            bounced[i] |= c[i].floor[k] > 0;
-            c[i].floor[k] = vr_min(0, c[i].floor[k]);
-        }
-    }
-}
-
-/* an impulse p along n at point at: on b, and minus on a */
-static void push_pair(vrIslandBody *a, vrIslandBody *b, vec3 n, vec3 at, double p)
-{
-    vec3 j = vec3_scale(n, p);
-    if (b->dynamic) {
-        b->v = vec3_madd(b->v, b->inv_mass, j);
-        b->w = vec3_add(b->w, mat33_mulv(&b->inv_inertia, vec3_cross(vec3_sub(at, b->x), j)));
-    }
-    if (a->dynamic) {
-        a->v = vec3_madd(a->v, -a->inv_mass, j);
-        a->w = vec3_sub(a->w, mat33_mulv(&a->inv_inertia, vec3_cross(vec3_sub(at, a->x), j)));
-    }
-}
-
-/* Newton's bounces at several points at once may gain energy (a turning
- * box landing on two corners: the impulse that meets one point's floor
- * also lifts the other), and a solve that gains goes without bounces: an
- * impact that came within an island step lost all it bounced with (physics
- * fuzzer seed 915, e = 1 and no force: a box knocked onto the floor on
- * three corners, 0.49 J of its 0.96 J).  Poisson's bounce instead: each
- * contact that bounced gets its compression impulses (the bounceless
- * solve's) again, e times, scaled by the s <= 1 that gives back e^2 of
- * what the bounceless solve took, e the largest of theirs (with e = 1 the
- * island keeps its energy).  The velocities are linear in s, so the energy
- * is quadratic in it: K(s) = K + a s + b s^2 / 2.  The contacts' impulses
- * stay compression's (the next step's warm start). */
-static void poisson_bounces(vrIslandBody *body, int nbody, const vrIslandContact *c, int ncontact, const int *bounced,
-                            const mat33 *inertia, double e0, vrIslandBody *save)
-{
-    double e = 0, k = kinetic(body, inertia, nbody), a = 0, b = 0, target, s;
-    int i, j;
-    for (i = 0; i < ncontact; i++)
-        if (bounced[i]) e = vr_max(e, c[i].e);
-    if (!(e > 0) || !(k < e0)) return;
-    memcpy(save, body, (size_t)nbody * sizeof *save);
-    for (i = 0; i < ncontact; i++)
-        for (j = 0; bounced[i] && j < c[i].npoints; j++)
-            push_pair(&body[c[i].a], &body[c[i].b], c[i].n, c[i].p[j], c[i].e * c[i].lambda[j]);
-    for (i = 0; i < nbody; i++) {
-        vec3 dv = vec3_sub(body[i].v, save[i].v), dw = vec3_sub(body[i].w, save[i].w);
-        if (!body[i].dynamic) continue;
-        a += vec3_dot(save[i].v, dv) / body[i].inv_mass + vec3_dot(save[i].w, mat33_mulv(&inertia[i], dw));
-        b += vec3_len2(dv) / body[i].inv_mass + vec3_dot(dw, mat33_mulv(&inertia[i], dw));
-    }
-    target = k + e * e * (e0 - k);
-    s = b > 0 ? vr_min(1, (-a + sqrt(a * a + 2 * b * (target - k))) / b) : 0;
-    for (i = 0; i < nbody; i++) {
-        body[i].v = vec3_madd(save[i].v, s, vec3_sub(body[i].v, save[i].v));
-        body[i].w = vec3_madd(save[i].w, s, vec3_sub(body[i].w, save[i].w));
-    }
-    if (!(s > 0) || !(kinetic(body, inertia, nbody) <= e0 * (1 + 1e-12) + 1e-300))
-        memcpy(body, save, (size_t)nbody * sizeof *body);
-}
-
 #define MORE_SWEEPS 64   /* a step's solve that gains over the step sweeps on so far */
 
 static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
@@ -378,23 +243,23 @@ static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int nc
     before = x->before, inertia = x->inertia;
     memcpy(before, body, (size_t)nbody * sizeof *before);
     for (i = 0; i < nbody; i++) inertia[i] = body[i].dynamic ? mat33_inverse(&body[i].inv_inertia) : mat33_zero();
-    e0 = kinetic(body, inertia, nbody);
+    e0 = vrIslandEnergy_Kinetic(body, inertia, nbody);
     /* The exact solution with floors <= 0 never gains energy (the
      * impulses' work at the velocities after is lambda floor + f.u <= 0);
      * a solve left short of it with friction may, and bounces may, and
      * such a solve is done again without friction, then without bounces
      * too, which never gains (each step then lowers the energy or keeps it). */
     for (try = 0; try < 3; try++) {
-        if (try == 2) no_bounces(c, ncontact, x->bounced);
+        if (try == 2) vrIslandEnergy_NoBounces(c, ncontact, x->bounced);
         r = solve(body, nbody, c, ncontact, sweeps, tol, try > 0, stall, st, x);
         st->frictionless = try > 0, st->bounceless = try > 1;
-        if (r != 0 || try == 2 || kinetic(body, inertia, nbody) <= e0 * (1 + 1e-12) + 1e-300) break;
+        if (r != 0 || try == 2 || vrIslandEnergy_Kinetic(body, inertia, nbody) <= e0 * (1 + 1e-12) + 1e-300) break;
         memcpy(body, before, (size_t)nbody * sizeof *before);
     }
-    if (r == 0 && st->bounceless) poisson_bounces(body, nbody, c, ncontact, x->bounced, inertia, e0, x->bounceless);
+    if (r == 0 && st->bounceless) vrIslandEnergy_Poisson(body, nbody, c, ncontact, x->bounced, inertia, e0, x->bounceless);
     if (st->frictionless)
         for (i = 0; i < ncontact; i++) c[i].friction = vec3_zero(), c[i].twist = 0;
-    if (r == 0) R = step_gain(body, before, inertia, nbody, &C);
+    if (r == 0) R = vrIslandEnergy_StepGain(body, before, inertia, nbody, c, ncontact, x->pushed, &C);
     if (R > 0 && stall) {
         /* A step's solve stopped at the cap short of the answer (a pile's
          * island of ninety) may gain a little over the step.  Scaled back,
@@ -409,9 +274,9 @@ static int solve_tries(vrIslandBody *body, int nbody, vrIslandContact *c, int nc
         memcpy(body, before, (size_t)nbody * sizeof *before);
         r = solve(body, nbody, c, ncontact, MORE_SWEEPS, tol, frictionless, stall, st, x);
         st->frictionless = frictionless, st->bounceless = bounceless;
-        if (r == 0) R = step_gain(body, before, inertia, nbody, &C);
+        if (r == 0) R = vrIslandEnergy_StepGain(body, before, inertia, nbody, c, ncontact, x->pushed, &C);
     }
-    if (r == 0) pay_back(body, before, nbody, c, ncontact, R, C);
+    if (r == 0) vrIslandEnergy_PayBack(body, before, nbody, c, ncontact, R, C);
     return r;
 }
 

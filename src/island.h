@@ -65,6 +65,11 @@ typedef struct vrIslandContact {
     double twist;             /* out: angular impulse on b about n (friction against turning) */
 } vrIslandContact;
 
+/* pushed[i] = 1 when an impulse of a solved contact (normal, friction or
+ * twist) acts on body i, else 0: the island step flies the others free,
+ * under the force (island_step.c), and its energy check counts only these */
+void vrIsland_Pushed(const vrIslandContact *c, int ncontact, unsigned char *pushed, int nbody);
+
 typedef struct vrIslandStats {
     int sweeps;               /* Gauss-Seidel sweeps made */
     int shock;                /* 1 when the ground-up pass ran */
@@ -87,6 +92,8 @@ typedef struct vrIslandScratch {
     vrIslandBody *before, *bounceless;
     mat33 *inertia;
     int *bounced;
+    unsigned char *pushed;
+    int pushedcap;
     int ptcap, patchcap, lcpcap, mcap, passcap, beforecap, inertiacap, bouncelesscap, bouncedcap;
 } vrIslandScratch;
 void vrIslandScratch_Free(vrIslandScratch *x);

@@ -162,15 +162,7 @@ static void set_floors(const vrWorld *w, const Island *is, const vrTouch *k, vrI
  * stays in its island (two bodies touching at rest in zero g). */
 static void pushed_bodies(Island *is)
 {
-    int k, i;
-    if (!is->pushed) return;   /* no body added yet: no contact either */
-    memset(is->pushed, 0, (size_t)is->n);
-    for (k = 0; k < is->nc; k++) {
-        const vrIslandContact *c = &is->c[k];
-        int acts = vec3_len2(c->friction) > 0 || c->twist != 0;
-        for (i = 0; i < c->npoints && !acts; i++) acts = c->lambda[i] != 0;
-        if (acts) is->pushed[c->a] = is->pushed[c->b] = 1;
-    }
+    if (is->pushed) vrIsland_Pushed(is->c, is->nc, is->pushed, is->n);   /* NULL: no body added yet, no contact */
 }
 
 /* the island of root r: its contacts (the touches of run), solved; its

@@ -1,0 +1,167 @@
+/* island_energy.c — an island solve's energy check (SPEC 7: with e < 1 or
+ * friction, energy never rises; island.c's tries ask for it).
+ *   vrIslandEnergy_Kinetic, step_energy   its measures
+ *   vrIsland_Pushed (island.h)            the bodies a solve's impulses act on
+ *   vrIslandEnergy_StepGain, _PayBack     what a step's solve gains; impulses scaled back until
+ *                                         it gains nothing
+ *   vrIslandEnergy_NoBounces, _Poisson    the bounces dropped; Poisson's bounce given back
+ */
+#include <math.h>
+#include <string.h>
+#include "island_energy.h"
+
+/* the bodies' kinetic energy; inertia[i] is the inverse of body i's
+ * inv_inertia, found once a solve (the energy checks measure it four
+ * times, and the inverse was a tenth of their cost) */
+double vrIslandEnergy_Kinetic(const vrIslandBody *b, const mat33 *inertia, int n)
+{
+    double e = 0;
+    int i;
+    for (i = 0; i < n; i++) {
+        if (!b[i].dynamic) continue;
+        e += 0.5 / b[i].inv_mass * vec3_len2(b[i].v) + 0.5 * vec3_dot(b[i].w, mat33_mulv(&inertia[i], b[i].w));
+    }
+    return e;
+}
+
+/* kinetic energy less the work the force paid in does over the step's
+ * flight at the velocities as they are: the step's energy but for the
+ * potential energy at its start, which no impulse changes */
+static double step_energy(const vrIslandBody *b, const mat33 *inertia, int n)
+{
+    double e = vrIslandEnergy_Kinetic(b, inertia, n);
+    int i;
+    for (i = 0; i < n; i++)
+        if (b[i].dynamic) e -= vec3_dot(b[i].paid, b[i].v) / b[i].inv_mass;
+    return e;
+}
+
+void vrIsland_Pushed(const vrIslandContact *c, int ncontact, unsigned char *pushed, int nbody)
+{
+    int k, i;
+    memset(pushed, 0, (size_t)nbody);
+    for (k = 0; k < ncontact; k++) {
+        int acts = vec3_len2(c[k].friction) > 0 || c[k].twist != 0;
+        for (i = 0; i < c[k].npoints && !acts; i++) acts = c[k].lambda[i] != 0;
+        if (acts) pushed[c[k].a] = pushed[c[k].b] = 1;
+    }
+}
+
+/* the step's energy after the solve less before the force was paid in,
+ * when that is above SPEC 7's allowance (else 0); *C the step's loss with
+ * no impulse at all, sum m |paid|^2 / 2.  Of the bodies an impulse acts on
+ * only: the others fly free under the force (island_step.c), which loses
+ * nothing, and counted with the rest their C let the rest gain it (a pile
+ * of fifty rose 1.9e-4 J in a step, a body of its island lifted). */
+double vrIslandEnergy_StepGain(const vrIslandBody *body, const vrIslandBody *before, const mat33 *inertia, int nbody,
+                        const vrIslandContact *c, int ncontact, unsigned char *pushed, double *C)
+{
+    double e0 = 0, R = 0;   /* the kinetic energy before the force, the step's energy after */
+    int i;
+    *C = 0;
+    vrIsland_Pushed(c, ncontact, pushed, nbody);
+    for (i = 0; i < nbody; i++)
+        if (body[i].dynamic && pushed[i]) {
+            *C += 0.5 * vec3_len2(body[i].paid) / body[i].inv_mass;
+            e0 += step_energy(&before[i], &inertia[i], 1), R += step_energy(&body[i], &inertia[i], 1);
+        }
+    if (!(*C > 0)) return 0;
+    e0 += *C, R -= e0;
+    return R > 1e-9 * fmin(1.0, e0 + *C) ? R : 0;
+}
+
+/* The step's energy after the solve against before the force was paid in
+ * (island.h).  When it rose by R, the impulses are scaled by s in [0, 1]:
+ * with none the step loses C = sum m |paid|^2 / 2, and the step's energy
+ * is convex in s, so s = C / (C + R) gains nothing (s is 1 - R / C to
+ * first order: 4e-5 for the pile's worst, a resting body sinking 4e-9 m in
+ * the step).  A gain within SPEC 7's 1e-9 J (and 1e-9 of the island's own
+ * energy, when that is less than 1 J) is left alone: most solves of a
+ * settling pile gain 1e-12 J or less, rounding, and scaled every one
+ * pulled the pile's settling along another path.  Without a force there
+ * is nothing to scale back to; the kinetic check's tries hold there. */
+void vrIslandEnergy_PayBack(vrIslandBody *body, const vrIslandBody *before, int nbody, vrIslandContact *c, int ncontact,
+                     double R, double C)
+{
+    double s;
+    int i, k;
+    if (!(R > 0)) return;
+    s = C / (C + R);
+    for (i = 0; i < nbody; i++) {
+        body[i].v = vec3_add(before[i].v, vec3_scale(vec3_sub(body[i].v, before[i].v), s));
+        body[i].w = vec3_add(before[i].w, vec3_scale(vec3_sub(body[i].w, before[i].w), s));
+    }
+    for (i = 0; i < ncontact; i++) {
+        for (k = 0; k < c[i].npoints; k++) c[i].lambda[k] *= s;
+        c[i].friction = vec3_scale(c[i].friction, s), c[i].twist *= s;
+    }
+}
+
+/* the floors cut to <= 0: the bounces go; bounced[i] = 1 for a contact
+ * that had one */
+void vrIslandEnergy_NoBounces(vrIslandContact *c, int ncontact, int *bounced)
+{
+    int i, k;
+    for (i = 0; i < ncontact; i++) {
+        bounced[i] = 0;
+        for (k = 0; k < c[i].npoints; k++) {
+            bounced[i] |= c[i].floor[k] > 0;
+            c[i].floor[k] = vr_min(0, c[i].floor[k]);
+        }
+    }
+}
+
+/* an impulse p along n at point at: on b, and minus on a */
+static void push_pair(vrIslandBody *a, vrIslandBody *b, vec3 n, vec3 at, double p)
+{
+    vec3 j = vec3_scale(n, p);
+    if (b->dynamic) {
+        b->v = vec3_madd(b->v, b->inv_mass, j);
+        b->w = vec3_add(b->w, mat33_mulv(&b->inv_inertia, vec3_cross(vec3_sub(at, b->x), j)));
+    }
+    if (a->dynamic) {
+        a->v = vec3_madd(a->v, -a->inv_mass, j);
+        a->w = vec3_sub(a->w, mat33_mulv(&a->inv_inertia, vec3_cross(vec3_sub(at, a->x), j)));
+    }
+}
+
+/* Newton's bounces at several points at once may gain energy (a turning
+ * box landing on two corners: the impulse that meets one point's floor
+ * also lifts the other), and a solve that gains goes without bounces: an
+ * impact that came within an island step lost all it bounced with (physics
+ * fuzzer seed 915, e = 1 and no force: a box knocked onto the floor on
+ * three corners, 0.49 J of its 0.96 J).  Poisson's bounce instead: each
+ * contact that bounced gets its compression impulses (the bounceless
+ * solve's) again, e times, scaled by the s <= 1 that gives back e^2 of
+ * what the bounceless solve took, e the largest of theirs (with e = 1 the
+ * island keeps its energy).  The velocities are linear in s, so the energy
+ * is quadratic in it: K(s) = K + a s + b s^2 / 2.  The contacts' impulses
+ * stay compression's (the next step's warm start). */
+void vrIslandEnergy_Poisson(vrIslandBody *body, int nbody, const vrIslandContact *c, int ncontact, const int *bounced,
+                            const mat33 *inertia, double e0, vrIslandBody *save)
+{
+    double e = 0, k = vrIslandEnergy_Kinetic(body, inertia, nbody), a = 0, b = 0, target, s;
+    int i, j;
+    for (i = 0; i < ncontact; i++)
+        if (bounced[i]) e = vr_max(e, c[i].e);
+    if (!(e > 0) || !(k < e0)) return;
+    memcpy(save, body, (size_t)nbody * sizeof *save);
+    for (i = 0; i < ncontact; i++)
+        for (j = 0; bounced[i] && j < c[i].npoints; j++)
+            push_pair(&body[c[i].a], &body[c[i].b], c[i].n, c[i].p[j], c[i].e * c[i].lambda[j]);
+    for (i = 0; i < nbody; i++) {
+        vec3 dv = vec3_sub(body[i].v, save[i].v), dw = vec3_sub(body[i].w, save[i].w);
+        if (!body[i].dynamic) continue;
+        a += vec3_dot(save[i].v, dv) / body[i].inv_mass + vec3_dot(save[i].w, mat33_mulv(&inertia[i], dw));
+        b += vec3_len2(dv) / body[i].inv_mass + vec3_dot(dw, mat33_mulv(&inertia[i], dw));
+    }
+    target = k + e * e * (e0 - k);
+    s = b > 0 ? vr_min(1, (-a + sqrt(a * a + 2 * b * (target - k))) / b) : 0;
+    for (i = 0; i < nbody; i++) {
+        body[i].v = vec3_madd(save[i].v, s, vec3_sub(body[i].v, save[i].v));
+        body[i].w = vec3_madd(save[i].w, s, vec3_sub(body[i].w, save[i].w));
+    }
+    if (!(s > 0) || !(vrIslandEnergy_Kinetic(body, inertia, nbody) <= e0 * (1 + 1e-12) + 1e-300))
+        memcpy(body, save, (size_t)nbody * sizeof *body);
+}
+
