@@ -68,7 +68,7 @@ static int kick(const vrResponding *o, vrUpdate *up, vrBody *b, const vrEvent *e
     st->v = v;
     st->L = b->rot == VR_ROT_NONE && vec3_len2(w) == 0 ? vec3_zero() : mat33_mulv(&ib->inertia, w);
     st->resting = 0;
-    st->hit = st->hit || vrBody_Jolted(vec3_sub(v, ib->v), vec3_sub(w, ib->w), b->r_out, o->v_rest);
+    if (vrBody_Jolted(vec3_sub(v, ib->v), vec3_sub(w, ib->w), b->r_out, o->v_rest)) vrBodyState_Jolt(st, o->flight->accel);
     return 0;
 }
 

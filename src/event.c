@@ -20,6 +20,12 @@ void vrUpdate_Free(vrUpdate *u)
     vrUpdate_Init(u);
 }
 
+void vrBodyState_Jolt(vrBodyState *st, vec3 accel)
+{
+    st->hit = 1;
+    if (st->contact && vec3_dot(st->v, accel) < 0) st->contact = 0, st->island = -1;
+}
+
 void vrBody_Capture(vrBody *b, double t, vrBodyState *st)
 {
     vrPose p;

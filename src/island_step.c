@@ -201,6 +201,7 @@ static int solve_one(vrWorld *w, Island *is, const vrRooted *run, int len, int r
         vrBodyState *st;
         vrPose pose;
         mat33 inertia;
+        int jolted;
         if (vrBody_Immovable(b)) continue;
         if (!(st = vrUpdate_Append(up, b, t))) return -1;
         if (!instant && !is->pushed[i] && vec3_len2(gh) > 0) {   /* free: as it flew, under the force */
@@ -209,12 +210,11 @@ static int solve_one(vrWorld *w, Island *is, const vrRooted *run, int len, int r
         }
         pose = vrPose_make(st->x, st->q);
         inertia = vrBody_InertiaWorld(b, &pose);
-        if (instant) {          /* an answer to a response: flight as it was */
-            vec3 w0 = mat33_mulv(&is->body[i].inv_inertia, st->L);
-            st->hit = st->hit || vrBody_Jolted(vec3_sub(is->body[i].v, st->v), vec3_sub(is->body[i].w, w0), b->r_out, v_rest);
-        }
+        jolted = instant && vrBody_Jolted(vec3_sub(is->body[i].v, st->v),
+                                          vec3_sub(is->body[i].w, mat33_mulv(&is->body[i].inv_inertia, st->L)), b->r_out, v_rest);
         st->v = is->body[i].v;
         st->L = mat33_mulv(&inertia, is->body[i].w);
+        if (jolted) vrBodyState_Jolt(st, p.flight.accel);   /* an answer to a response: flight as it was, or free */
         st->resting = 0;
         if (instant) continue;
         st->contact = 1;
