@@ -128,6 +128,7 @@ static int answered_together(const vrWorld *w, const Frame *f, const vrEvent *ev
     const vrBody *A = &w->table.obj[ev->a]->body, *B = &w->table.obj[ev->b]->body;
     int follow_up = ev->kind == VR_EV_CONTACT && ev->t == f->instant_t;
     if (ev->kind != VR_EV_CONTACT && ev->kind != VR_EV_IMPACT) return 0;
+    if (vrInstantLog_Held(&w->instant_log, ev)) return 1;   /* instant_undo.h */
     if (fmin(A->elasticity, B->elasticity) == 0) return follow_up || A->contact || B->contact;
     return follow_up && f->instant >= VR_PAIRWISE_MAX;
 }
@@ -148,9 +149,16 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
             return r;
         }
         w->subframes += ev.t > f->ts ? vrSchedule_FirstPointAtOrAfter(&g, ev.t) : 0;
+        if (vrInstantLog_Drives(w, &ev)) {   /* the instant again, with islands (instant_undo.h) */
+            if (vrInstantLog_Undo(w, &w->update) != 0 || vrWorld_ApplyUpdate(w, &w->update) != 0)
+                return vrGeom_Fail(err, n, "out of memory");
+            reach_changed(w, &w->update, p);
+            continue;
+        }
         if (vrSounds_Note(&w->sounds, &ev, &w->s) != 0) return vrGeom_Fail(err, n, "out of memory");
         if (answered_together(w, f, &ev) && (r = vrIsland_Instant(w, ev.t, ev.a, ev.b, err, n)) != 1) {
             if (r != 0) return r;
+            if (vrInstantLog_Note(w, &ev, &w->update, 1) != 0) return vrGeom_Fail(err, n, "out of memory");
             reach_changed(w, &w->update, p);
             f->instant++;
             f->ts = ev.t;
@@ -159,6 +167,7 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
         w->update.n = 0;
         r = vrOwners_Of(w)->respond(w, &ev, &w->update, err, n);
         if (r != 0) return r;
+        if (vrInstantLog_Note(w, &ev, &w->update, 0) != 0) return vrGeom_Fail(err, n, "out of memory");
         if (ev.kind == VR_EV_IMPACT || ev.kind == VR_EV_CONTACT) w->collisions++;
         if (vrWorld_ApplyUpdate(w, &w->update) != 0) return vrGeom_Fail(err, n, "out of memory");
         reach_changed(w, &w->update, p);
@@ -231,6 +240,7 @@ static int run_frame(vrWorld *w, char *err, size_t n)
     f.instant_t = w->instant_t;
     f.instant = w->instant;
     w->subframes = 0;
+    vrInstantLog_Frame(&w->instant_log);
     vrSounds_Frame(&w->sounds);
     vrReach_Frame(&w->reach, w->dyn, w->ndyn, f.ts, f.T, &p.flight);
     if (frame_bounded(w, &f, &p, err, n) != 0) return -1;
@@ -244,6 +254,7 @@ static int run_frame(vrWorld *w, char *err, size_t n)
             f.instant = w->instant;
             f.instant_t = w->instant_t;
             w->subframes = 0;
+            vrInstantLog_Frame(&w->instant_log);
             k = -1;
             continue;
         }

@@ -22,6 +22,7 @@ vrWorld *vrWorld_Create(void)
     w->still_structure = -1;
     vrUpdate_Init(&w->update);
     vrUpdate_Init(&w->pending);
+    vrInstantLog_Init(&w->instant_log);
     vrSplitmix_Seed(&w->rng, w->s.seed);
     vrPanel_Init(&w->panel);
     vrGrab_Init(&w->grab);
@@ -51,6 +52,7 @@ void vrWorld_Destroy(vrWorld *w)
     free(w->changed);
     vrUpdate_Free(&w->update);
     vrUpdate_Free(&w->pending);
+    vrInstantLog_Free(&w->instant_log);
     vrTouches_Free(&w->touches);
     free(w->contact_ids);
     vrIslandScratch_Free(&w->solve_scratch);

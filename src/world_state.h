@@ -33,6 +33,7 @@
 #include "island.h"
 #include "warm.h"
 #include "grab.h"
+#include "instant_undo.h"
 
 typedef struct vrSgp vrSgp;
 struct vrResume;
@@ -62,6 +63,7 @@ struct vrWorld {
     int ndyn_slot, dyn_slotcap;
     vrReach reach;           /* the grid's largest reach, from bounds on dyn */
     vrUpdate update;
+    vrInstantLog instant_log; /* loop.c: an instant's pairwise answers, to take back (instant_undo.h) */
     int *changed;            /* scratch: ids changed by an update */
     int nchanged, changedcap;
     vrTouches touches;       /* scratch: an island step's touching pairs */

@@ -27,7 +27,7 @@
  * display was opened yet (no other suite opens one, and this keeps it so) */
 #define VR_SUITES(X)                                                              \
     X(Render) X(Mass) X(Polyhedron) X(Motion) X(Closest) X(Contact) X(Support) X(FineHulls)    \
-    X(Distbound) X(Broadphase) X(AabbTree) X(Reach) X(Schedule) X(Response) X(Island) X(Impacts) \
+    X(Distbound) X(Broadphase) X(AabbTree) X(Reach) X(Schedule) X(Response) X(Island) X(Impacts) X(Instant) \
     X(Tunnelling) X(Rest) X(Sliding) X(Heap) X(Quiet) X(Energy) X(Clamps) X(Stacking) X(Scale) X(Track) X(Grab) X(Sound) X(Save) X(Parallel) X(ParallelSound) \
     X(Window) X(Hand) X(Wire) X(Panel)
 

@@ -399,12 +399,16 @@ static int test_the_instant_cap_holds_across_frames(void)
 
 /* Workers made anew (an edit re-deals the pairs; another worker count, or
  * none) start new owners whose counters start at 0: the stats keep what
- * the old ones counted, so klu_solves still equals collisions (SPEC 1.3),
- * and the bits are the serial run's */
+ * the old ones counted, so klu_solves and collisions (SPEC 1.3) are the
+ * serial run's after every part, and so are the bits.  (klu_solves counts
+ * the pairwise answers solved, and collisions the contacts answered: an
+ * instant taken back and answered with its islands, instant_undo.h, makes
+ * them differ.) */
 static int test_counts_and_bits_survive_new_workers(void)
 {
     int gps[] = {2, 2, 3, 0}, parallel, k;
     unsigned long long hash[2];
+    long long solves[4], collisions[4];
     for (parallel = 0; parallel < 2; parallel++) {
         vrWorld *w = vrWorld_Create();
         vrStats st;
@@ -420,8 +424,11 @@ static int test_counts_and_bits_survive_new_workers(void)
             vrWorld_SetObjectDef(w, 0, &d, NULL, 0);
             ENSURE(vrWorld_Step(w, 15, NULL, 0) == 0);
             vrWorld_GetStats(w, &st);
-            ENSURE_MSG(st.klu_solves == st.collisions, "%s, part %d: %lld solves, %lld collisions",
-                       parallel ? "workers" : "serial", k, st.klu_solves, st.collisions);
+            if (!parallel) solves[k] = st.klu_solves, collisions[k] = st.collisions;
+            ENSURE_MSG(st.klu_solves == solves[k] && st.collisions == collisions[k],
+                       "%s, part %d: %lld solves, %lld collisions; serial %lld, %lld", parallel ? "workers" : "serial", k,
+                       st.klu_solves, st.collisions, solves[k], collisions[k]);
+            ENSURE(k == 0 || st.klu_solves > solves[k - 1]);   /* each part adds to what was counted */
         }
         ENSURE(st.collisions > 10);
         hash[parallel] = vrScene_DumpHash(w);
@@ -679,12 +686,13 @@ done:
 static int test_switching_workers_or_heap_mid_run_changes_no_bit(void)
 {
     vrStats st;
-    unsigned long long straight = after_switches(settling_pyramid, 5, 0, &st);
-    unsigned long long switched = after_switches(settling_pyramid, 5, 1, &st);
+    unsigned long long straight = after_switches(settling_pyramid, 4, 0, &st);
+    unsigned long long switched = after_switches(settling_pyramid, 4, 1, &st);
     printf("    %lld island steps, %lld contacts\n", st.island_steps, st.island_contacts);
-    /* contacts in play at the switches: the top box lands at the 10th
-     * frame, and the pyramid comes to rest after the 20th */
-    ENSURE(straight != 0 && st.island_steps > 40);
+    /* contacts in play at a switch: the lower rows rest from the 3rd frame
+     * on; the top box lands in the 11th, and the pyramid settles in the
+     * 12th and 13th (rests from the 14th), with a switch after the 12th */
+    ENSURE(straight != 0 && st.island_steps >= 15);
     ENSURE_MSG(switched == straight, "switched %016llx, straight %016llx", switched, straight);
     return 0;
 }
