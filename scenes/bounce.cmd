@@ -7,9 +7,10 @@
 # them like a cushion (carried by several balls at once); the yellow one
 # strikes the tray's rim, jostles its balls and tumbles to the floor.  The
 # balls bounce, lose energy on the furniture (elasticity 0.6) and settle
-# again on the chair and the pedestal: all ten rest from frame 1031 (10.3
-# s; by 3 s all but two, which slide 1-3 cm/s on the frictionless seat
-# and tray until a rail stops them), the white pillow from frame 282.
+# again on the chair and the pedestal: all ten rest from frame 1076 (10.8
+# s; the last slide a few cm/s on the frictionless seat and tray until a
+# rail stops them), the white pillow, which rocks on the chair's balls
+# before it settles, from frame 628.
 # The room, chair and pedestal (23 pieces) are static models of real
 # things (real = 1).
 #
@@ -37,8 +38,10 @@ eye = (0.1, -2.3, 2.0)
 look = (0.1, 0.5, 0.75)
 
 # ---- the room: floor at z = 0, walls on four sides ----
-# (the floor reaches the front wall: when it stopped at y = -2, the yellow
-# pillow slid off its edge at 9.7 s and fell out of the room)
+# (the floor reaches the front wall, and the side walls reach it too: when
+# the floor stopped at y = -2, the yellow pillow slid off its edge at 9.7
+# s and fell out of the room; when the side walls stopped there, it slid
+# past the left wall's end at 12 s and off the floor's side)
 cube floor
   size = (2, 3, 0.05)
   translate = (0, -1, -0.05)
@@ -54,15 +57,15 @@ cube back_wall
   real = 1
   color = (210, 205, 190)
 cube left_wall
-  size = (0.05, 2, 1.2)
-  translate = (-2.05, 0, 1.2)
+  size = (0.05, 3, 1.2)
+  translate = (-2.05, -1, 1.2)
   mass = -1
   elasticity = 0.6
   real = 1
   color = (195, 190, 175)
 cube right_wall
-  size = (0.05, 2, 1.2)
-  translate = (2.05, 0, 1.2)
+  size = (0.05, 3, 1.2)
+  translate = (2.05, -1, 1.2)
   mass = -1
   elasticity = 0.6
   real = 1
