@@ -97,7 +97,7 @@ static int test_a_ball_dropped_on_a_stack_leaves_it_standing(void)
     int k, f;
     vrScene_Box(w, "floor", vec3_make(1, 1, 0.05), vec3_make(0, 0, -0.05), -1, 0.5);
     for (k = 0; k < 3; k++) {
-        char name[8];
+        char name[16];
         snprintf(name, sizeof name, "b%d", k);
         box[k] = vrScene_Box(w, name, vec3_make(0.1, 0.1, 0.1), vec3_make(0, 0, 0.1 + GC + k * (0.2 + GC)), 1, 0.5);
     }
@@ -134,7 +134,7 @@ static int test_a_newtons_cradle_on_a_table_sends_out_one_ball(void)
     int i;
     vrScene_Box(w, "table", vec3_make(2, 1, 0.05), vec3_make(0, 0, -0.05), -1, 1);
     for (i = 0; i < 5; i++) {
-        char name[8];
+        char name[16];
         snprintf(name, sizeof name, "c%d", i);
         id[i] = vrScene_Sphere(w, name, 0.1, vec3_make(i * (0.2 + GC), 0, 0.1 + GC), vec3_zero(), 1, 1);
     }
