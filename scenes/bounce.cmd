@@ -10,7 +10,7 @@
 # again on the chair and the pedestal: all ten rest from frame 1076 (10.8
 # s; the last slide a few cm/s on the frictionless seat and tray until a
 # rail stops them), the white pillow, which rocks on the chair's balls
-# before it settles, from frame 628.
+# before it settles, from frame 489.
 # The room, chair and pedestal (23 pieces) are static models of real
 # things (real = 1).
 #

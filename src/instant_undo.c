@@ -28,6 +28,7 @@ void vrInstantLog_Frame(vrInstantLog *l)
     l->t = NAN;
     l->held = l->together = 0;
     l->collisions = l->clamps = 0;
+    l->answers = 0;
     l->before.n = 0;
     l->norder = 0;
 }
@@ -49,6 +50,11 @@ int vrInstantLog_Note(vrWorld *w, const vrEvent *ev, const vrUpdate *up, int tog
         l->t = ev->t;
         l->collisions = w->collisions;
         l->clamps = w->clamps;
+    }
+    l->answers++;
+    if (l->held) {   /* taken back already: once an instant */
+        l->held = 2;
+        return 0;
     }
     if (together || l->together || ev->kind == VR_EV_PUSHOUT) {   /* a push-out moved bodies: kept */
         l->together = 1;
@@ -92,5 +98,7 @@ int vrInstantLog_Undo(vrWorld *w, vrUpdate *up)
     l->held = 1;
     l->before.n = 0;
     l->norder = 0;
-    return 0;
+    i = l->answers;
+    l->answers = 0;
+    return i;
 }

@@ -22,9 +22,10 @@ struct vrWorld;
 
 typedef struct vrInstantLog {
     double t;               /* the instant noted (NaN: none) */
-    int held;               /* 1: taken back once; t's answers are with their islands */
+    int held;               /* 1: taken back, its next answer with its islands; 2: so answered */
     int together;           /* an islands' answer or a push-out at t: nothing to take back */
     long long collisions, clamps;   /* stats collisions and clamps as t's answers found them */
+    int answers;            /* answers noted at t */
     vrUpdate before;        /* the bodies t's pairwise answers changed, as they were */
     long long *order;       /* the pairs answered pairwise at t */
     int norder, ordercap;
@@ -43,9 +44,16 @@ int vrInstantLog_Note(struct vrWorld *w, const vrEvent *ev, const vrUpdate *up, 
  * yet answered: the instant is to be taken back */
 int vrInstantLog_Drives(const struct vrWorld *w, const vrEvent *ev);
 /* the instant taken back: its states as they were put in up (to be
- * applied as an answer is), collisions as they were, held set */
+ * applied as an answer is), collisions as they were, held set; the
+ * number of answers taken back (the loop counts an instant's answers), or
+ * -1 when out of memory */
 int vrInstantLog_Undo(struct vrWorld *w, vrUpdate *up);
-/* 1 when ev is at an instant taken back: answered with its islands */
-static inline int vrInstantLog_Held(const vrInstantLog *l, const vrEvent *ev) { return l->held && ev->t == l->t; }
+/* 1 when ev is the first event at an instant taken back (its first
+ * impact again): answered with its islands.  Those islands so answered,
+ * the instant's later events are answered as any (pairwise): a pile's big
+ * islands, left by their sweeps a little short, came back at the instant
+ * again and again, each then solved whole (a landing pile of 300 took
+ * five island answers for each instant taken back) */
+static inline int vrInstantLog_Held(const vrInstantLog *l, const vrEvent *ev) { return l->held == 1 && ev->t == l->t; }
 
 #endif
