@@ -60,7 +60,7 @@ static int test_a_ball_dropped_on_a_box_lying_on_the_floor_bounces_as_off_the_fl
 
 /* e = 1 everywhere, the ball dropped 8 mm onto the box: it keeps bouncing,
  * its energy kept to 1e-8 over 300 frames (each bounce is a solve of the
- * three together, left within its sweeps' tolerance: 3e-10 J a bounce, a
+ * three together, left within its sweeps' tolerance: 6e-10 J a bounce, a
  * 1e-8 of the bounce's own energy), and the box does not move.  Pair by
  * pair, the box came into the floor slower than v_rest, did not bounce,
  * and the energy it took was lost: the ball lost its whole bounce. */
