@@ -12,7 +12,8 @@
  * instant's pairwise answers change, as they were; when a follow-up at
  * that instant drives a body so changed into a static (or held) body, every
  * answer of the instant is taken back and the instant starts again, its
- * answers then all with their islands (island_step.c's instant). */
+ * first impact then answered with its islands (island_step.c's instant),
+ * once an instant. */
 #ifndef VROC_INSTANT_UNDO_H
 #define VROC_INSTANT_UNDO_H
 
@@ -37,7 +38,8 @@ void vrInstantLog_Free(vrInstantLog *l);
 void vrInstantLog_Frame(vrInstantLog *l);
 /* ev answered by up, before up is applied: the bodies it changes, as
  * they are; together = 1 for an islands' answer (nothing then to note,
- * and the instant can no longer be taken back).  -1: out of memory */
+ * and the instant can no longer be taken back; so too after a push-out,
+ * and once it was taken back).  -1: out of memory */
 int vrInstantLog_Note(struct vrWorld *w, const vrEvent *ev, const vrUpdate *up, int together);
 /* 1 when ev, a follow-up at the noted instant, drives a body one of its
  * pairwise answers changed into an immovable body, through a pair not

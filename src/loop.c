@@ -120,7 +120,9 @@ typedef struct Frame {
  * not one corner at a time: at once when the pair cannot bounce (e = 0);
  * when it can, follow-ups only, after VR_PAIRWISE_MAX pairwise answers (a
  * Newton's cradle's impulses go down the row one by one, as they must to
- * send out one ball).  (Every slow follow-up answered together cost a
+ * send out one ball); and the first impact again of an instant taken
+ * back because its answers drove a body into the floor it lies on
+ * (instant_undo.h).  (Every slow follow-up answered together cost a
  * pile twice the time: each solves whole islands.)  The decision reads
  * only the bodies, as every owner set can. */
 static int answered_together(const vrWorld *w, const Frame *f, const vrEvent *ev)
