@@ -83,6 +83,16 @@ vrBodyState *vrUpdate_Append(vrUpdate *u, vrBody *b, double t)
     return &u->body[u->n++];
 }
 
+int vrUpdate_AppendStates(vrUpdate *to, const vrUpdate *from)
+{
+    int i;
+    for (i = 0; i < from->n; i++) {
+        if (vrGrow((void **)&to->body, &to->cap, to->n + 1, sizeof *to->body) != 0) return -1;
+        to->body[to->n++] = from->body[i];
+    }
+    return 0;
+}
+
 /* the slot of each id in u (its first, as vrUpdate_Body finds), -1 if none */
 static int *slots_of(const vrUpdate *u, int nid)
 {

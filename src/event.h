@@ -84,6 +84,9 @@ vrBodyState *vrUpdate_Append(vrUpdate *u, vrBody *b, double t);
  * (a whole world's update is merged by a table of ids, not searched
  * state by state); -1 when out of memory */
 int vrUpdate_Merge(vrUpdate *to, const vrUpdate *from, int nid);
+/* every state of `from` added to the end of `to`, in order (no merge: a
+ * body in both is then in `to` twice); -1 when out of memory */
+int vrUpdate_AppendStates(vrUpdate *to, const vrUpdate *from);
 /* x's state and, when y is not NULL, y's (else *sy = NULL), both in the
  * update: both are added before either pointer is taken, since adding one
  * may move the array; -1 when out of memory */

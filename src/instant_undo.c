@@ -88,11 +88,8 @@ int vrInstantLog_Undo(vrWorld *w, vrUpdate *up)
     vrInstantLog *l = &w->instant_log;
     int i;
     up->n = 0;
-    for (i = 0; i < l->before.n; i++) {
-        if (vrGrow((void **)&up->body, &up->cap, up->n + 1, sizeof *up->body) != 0) return -1;
-        up->body[up->n] = l->before.body[i];
-        up->body[up->n++].resting = 0;   /* awake, as the answer taken back left it: its touches are looked at */
-    }
+    if (vrUpdate_AppendStates(up, &l->before) != 0) return -1;
+    for (i = 0; i < up->n; i++) up->body[i].resting = 0;   /* awake, as the answer taken back left it: its touches are looked at */
     w->collisions = l->collisions;
     w->clamps = l->clamps;
     l->held = 1;

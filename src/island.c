@@ -8,6 +8,7 @@
  *   solve_tries            the tries the energy check (island_energy.c) asks for, and a step's
  *                          sweeping on
  *   solve_with, vrIsland_Solve, vrIsland_SolveStep, vrIslandScratch_Free
+ *   vrIsland_Pushed        the bodies a solve's impulses act on
  */
 #include <stdlib.h>
 #include <string.h>
@@ -152,6 +153,17 @@ static int valid(const vrIslandBody *body, int nbody, const vrIslandContact *c, 
     for (i = 0; i < nbody; i++)
         if (body[i].dynamic && !(body[i].inv_mass > 0)) return 0;
     return 1;
+}
+
+void vrIsland_Pushed(const vrIslandContact *c, int ncontact, unsigned char *pushed, int nbody)
+{
+    int k, i;
+    memset(pushed, 0, (size_t)nbody);
+    for (k = 0; k < ncontact; k++) {
+        int acts = vec3_len2(c[k].friction) > 0 || c[k].twist != 0;
+        for (i = 0; i < c[k].npoints && !acts; i++) acts = c[k].lambda[i] != 0;
+        if (acts) pushed[c[k].a] = pushed[c[k].b] = 1;
+    }
 }
 
 void vrIslandScratch_Free(vrIslandScratch *x)

@@ -1,7 +1,6 @@
 /* island_energy.c — an island solve's energy check (SPEC 7: with e < 1 or
  * friction, energy never rises; island.c's tries ask for it).
- *   vrIslandEnergy_Kinetic, step_energy   its measures
- *   vrIsland_Pushed (island.h)            the bodies a solve's impulses act on
+ *   vrIslandEnergy_Kinetic, step_energy   its measures (vrIsland_Pushed, island.c: whose)
  *   vrIslandEnergy_StepGain, _PayBack     what a step's solve gains; impulses scaled back until
  *                                         it gains nothing
  *   vrIslandEnergy_NoBounces, _Poisson    the bounces dropped; Poisson's bounce given back
@@ -24,27 +23,12 @@ double vrIslandEnergy_Kinetic(const vrIslandBody *b, const mat33 *inertia, int n
     return e;
 }
 
-/* kinetic energy less the work the force paid in does over the step's
- * flight at the velocities as they are: the step's energy but for the
- * potential energy at its start, which no impulse changes */
-static double step_energy(const vrIslandBody *b, const mat33 *inertia, int n)
+/* a moving body's kinetic energy less the work the force paid in does
+ * over the step's flight at its velocities as they are: its step's energy
+ * but for the potential energy at the start, which no impulse changes */
+static double step_energy(const vrIslandBody *b, const mat33 *inertia)
 {
-    double e = vrIslandEnergy_Kinetic(b, inertia, n);
-    int i;
-    for (i = 0; i < n; i++)
-        if (b[i].dynamic) e -= vec3_dot(b[i].paid, b[i].v) / b[i].inv_mass;
-    return e;
-}
-
-void vrIsland_Pushed(const vrIslandContact *c, int ncontact, unsigned char *pushed, int nbody)
-{
-    int k, i;
-    memset(pushed, 0, (size_t)nbody);
-    for (k = 0; k < ncontact; k++) {
-        int acts = vec3_len2(c[k].friction) > 0 || c[k].twist != 0;
-        for (i = 0; i < c[k].npoints && !acts; i++) acts = c[k].lambda[i] != 0;
-        if (acts) pushed[c[k].a] = pushed[c[k].b] = 1;
-    }
+    return vrIslandEnergy_Kinetic(b, inertia, 1) - vec3_dot(b->paid, b->v) / b->inv_mass;
 }
 
 /* the step's energy after the solve less before the force was paid in,
@@ -63,7 +47,7 @@ double vrIslandEnergy_StepGain(const vrIslandBody *body, const vrIslandBody *bef
     for (i = 0; i < nbody; i++)
         if (body[i].dynamic && pushed[i]) {
             *C += 0.5 * vec3_len2(body[i].paid) / body[i].inv_mass;
-            e0 += step_energy(&before[i], &inertia[i], 1), R += step_energy(&body[i], &inertia[i], 1);
+            e0 += step_energy(&before[i], &inertia[i]), R += step_energy(&body[i], &inertia[i]);
         }
     if (!(*C > 0)) return 0;
     e0 += *C, R -= e0;

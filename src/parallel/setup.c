@@ -34,19 +34,9 @@ int vrSgp_AddAnchor(vrUpdate *up, vrBody *b)
     return 0;
 }
 
-int vrSgp_AppendStates(vrUpdate *to, const vrUpdate *from)
-{
-    int i;
-    for (i = 0; i < from->n; i++) {
-        if (vrGrow((void **)&to->body, &to->cap, to->n + 1, sizeof *to->body) != 0) return -1;
-        to->body[to->n++] = from->body[i];
-    }
-    return 0;
-}
-
 int vrSgp_Delivered(vrWorld *w, vrSgp *s)
 {
-    int r = vrSgp_AppendStates(&s->snap_pending, &w->pending);
+    int r = vrUpdate_AppendStates(&s->snap_pending, &w->pending);
     w->pending.n = 0;
     return r;
 }

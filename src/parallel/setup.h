@@ -13,7 +13,6 @@ int vrSgp_Setup(vrWorld *w, vrSgp *s, char *err, size_t n);
 vrGpCounts vrSgp_Counts(const vrSgp *s, int g);
 /* appends b's anchor as it is, to be restored bit for bit */
 int vrSgp_AddAnchor(vrUpdate *up, vrBody *b);
-int vrSgp_AppendStates(vrUpdate *to, const vrUpdate *from);
 /* the world's pending states went out: kept for redoing the frame */
 int vrSgp_Delivered(vrWorld *w, vrSgp *s);
 

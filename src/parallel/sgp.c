@@ -63,7 +63,7 @@ static int recover(vrWorld *w, char *err, size_t n)
     s->taken = -1;
     s->owed_h = 0;
     s->ahead = 0;
-    if (vrSgp_AppendStates(&w->pending, &s->snap_pending) != 0) return snprintf(err, n, "out of memory"), -1;
+    if (vrUpdate_AppendStates(&w->pending, &s->snap_pending) != 0) return snprintf(err, n, "out of memory"), -1;
     s->snap_pending.n = 0;
     if (vrSgp_Setup(w, s, err, n) != 0) return -1;
     return VR_RESTART_FRAME;
@@ -231,7 +231,7 @@ static int taken_answer(vrSgp *s, const vrEvent *ev, vrUpdate *up)
     g->now.factors += g->answer_cost.factors;
     g->answered = 0;
     s->taken = s->responder;
-    return vrSgp_AppendStates(up, &g->answer) == 0 ? 1 : -1;
+    return vrUpdate_AppendStates(up, &g->answer) == 0 ? 1 : -1;
 }
 
 static int sgp_respond(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, size_t n)
@@ -251,7 +251,7 @@ static int sgp_respond(vrWorld *w, const vrEvent *ev, vrUpdate *up, char *err, s
     if (VR_ENCODE(&s->req, vroc_advance_t, &m) != 0) return snprintf(err, n, "out of memory"), -1;
     s->req_channel = VR_CH_ADVANCE;
     if (vrSgp_Exchange(s, WAIT_UPDATE, s->responder)) return recover(w, err, n);
-    return vrSgp_AppendStates(up, &s->reply) == 0 ? 0 : (snprintf(err, n, "out of memory"), -1);
+    return vrUpdate_AppendStates(up, &s->reply) == 0 ? 0 : (snprintf(err, n, "out of memory"), -1);
 }
 
 /* SPEC 8: workers on a network URL publish the frame's sounds on it
