@@ -31,6 +31,7 @@
 #include "island_step.h"
 #include "island.h"
 #include "island_group.h"
+#include "balance.h"
 #include "config.h"
 #include "ownerset.h"
 #include "owners.h"
@@ -427,5 +428,6 @@ int vrIsland_Step(vrWorld *w, double t, double h, char *err, size_t n)
         if ((r = wake_touched(w, t)) < 0) return vrGeom_Fail(err, n, "out of memory");
         if (r == 0) break;
     }
+    if (vrIslandScratch_Reserve(w) != 0 || vrBalance_Mark(w, t) != 0) return vrGeom_Fail(err, n, "out of memory");
     return solve_all(w, t, h, -1, -1, err, n);
 }

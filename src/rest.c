@@ -105,7 +105,7 @@ static void qualifies(vrWorld *w, const vrUpdate *up, vrObject *o)
     double dt = w->s.time_step, dx, turn, motion;
     int rise, still, slow;
     vrPose p;
-    if (!b->contact || b->hit || b->island < 0 || !o->have_frame_pose || vrUpdate_Find(up, up->n, b->id)) {
+    if (!b->contact || b->hit || o->tipping || b->island < 0 || !o->have_frame_pose || vrUpdate_Find(up, up->n, b->id)) {
         o->quiet_frames = o->slow_frames = 0;
         return;
     }
@@ -186,6 +186,7 @@ void vrRest_RememberFramePoses(vrWorld *w)
         o->frame_pose_lazy = 1;
         o->have_frame_pose = 1;
         o->body.hit = 0;
+        o->tipping = 0;
     }
 }
 

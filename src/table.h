@@ -30,6 +30,8 @@ typedef struct vrObject {
     int quiet_frames;        /* frames in a row it was still, not speeding up (rest.c) */
     int slow_frames;         /* frames in a row it was slow, not speeding up (rest.c) */
     double slow_start;       /* its motion over the first frame of that window (m) */
+    int tipping;             /* at its last island step this frame its supports missed its centre
+                              * (balance.h): it may not rest */
     struct vrSavedBody *saved; /* read from a saved file, until it goes live (saved.h) */
 } vrObject;
 
