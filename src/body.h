@@ -151,6 +151,13 @@ double vrBody_SpinBound(const vrBody *b);
 static inline int vrBody_IsFree(const vrBody *b) { return !b->is_static && !b->resting; }
 /* infinite mass in a response or an island solve: static, or held (kinematic) */
 static inline int vrBody_Immovable(const vrBody *b) { return b->is_static || b->kinematic; }
+/* what an island step of length h pays into the body's velocity before its
+ * solve (island_step.c; the owners' touches allow for it): the force's
+ * g h for a body that can move, none for an immovable one */
+static inline vec3 vrBody_StepGravity(const vrBody *b, vec3 accel, double h)
+{
+    return vrBody_Immovable(b) ? vec3_zero() : vec3_scale(accel, h);
+}
 double vrBody_Energy(vrBody *b, double t, vec3 g);
 
 #endif

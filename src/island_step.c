@@ -82,8 +82,8 @@ static int add_body(Island *is, int *slot, int id)
 }
 
 /* body id at t as island.c sees it: a moving one with the step's gravity
- * g h in its velocity */
-static void island_body(vrWorld *w, int id, double t, vec3 gh, vrIslandBody *out)
+ * (vrBody_StepGravity) in its velocity */
+static void island_body(vrWorld *w, int id, double t, vec3 accel, double h, vrIslandBody *out)
 {
     vrBody *b = &w->table.obj[id]->body;
     vrPose pose;
@@ -95,7 +95,7 @@ static void island_body(vrWorld *w, int id, double t, vec3 gh, vrIslandBody *out
     out->inv_mass = !out->dynamic ? 0 : b->inv_mass;
     if (b->is_static) return;
     vrBody_Velocity(b, t, &out->v);   /* a held body: the hand's motion, no force */
-    if (out->dynamic) out->v = vec3_add(out->v, gh), out->paid = gh;
+    if (out->dynamic) out->paid = vrBody_StepGravity(b, accel, h), out->v = vec3_add(out->v, out->paid);
     out->w = vrBody_Omega(b, &pose);
 }
 
@@ -184,7 +184,7 @@ static int solve_one(vrWorld *w, Island *is, const vrRooted *run, int len, int r
     }
     for (i = 0; i < is->n; i++) w->isl_slot[is->id[i]] = -1;   /* as it was: -1 everywhere */
     if (k < len) return -1;
-    for (i = 0; i < is->n; i++) island_body(w, is->id[i], t, gh, &is->body[i]);
+    for (i = 0; i < is->n; i++) island_body(w, is->id[i], t, p.flight.accel, h, &is->body[i]);
     for (k = 0, nc = 0; k < len; k++) {
         const vrTouch *c = &w->touches.t[run[k].k];
         set_floors(w, is, c, &is->c[nc], gc, h, v_rest);

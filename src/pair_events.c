@@ -180,13 +180,12 @@ static void keep_points(const vrContact *c, vrTouch *k)
     }
 }
 
-/* what the island step's paid gravity (island_step.c: g h in the
- * velocity of every body that can move) adds to a point's normal
- * velocity n.(v_b - v_a) */
+/* what the island step's paid gravity (vrBody_StepGravity) adds to a
+ * point's normal velocity n.(v_b - v_a) */
 static double paid_lift(const vrOwner *o, const vrPair *p, vec3 n, double h)
 {
-    vec3 gh = vec3_scale(o->p.flight.accel, h);
-    vec3 ga = vrBody_Immovable(o->body[p->a]) ? vec3_zero() : gh, gb = vrBody_Immovable(o->body[p->b]) ? vec3_zero() : gh;
+    vec3 ga = vrBody_StepGravity(o->body[p->a], o->p.flight.accel, h);
+    vec3 gb = vrBody_StepGravity(o->body[p->b], o->p.flight.accel, h);
     return vec3_dot(n, vec3_sub(gb, ga));
 }
 
