@@ -14,6 +14,8 @@
  *            and the same with a 1 kg slab: the work must not grow with the
  *            mass ratio
  *   pile     100 random objects in a 4 m room, 6000 frames of 0.01 s (seed 0 in detail, then seeds 0-6 once each: the goal on their median)
+ *   landing  300 random objects dropped into a 5 m room, seeds 1-3: the frame
+ *            all rest by and the compute until then
  *   office   scenes/office.cmd, 600 frames, heap on and off
  *
  * `bench_contact NAME...` runs only the benchmarks named (pile, office, ...).
@@ -545,6 +547,51 @@ static void pile(void)
     pile_seeds();
 }
 
+/* ---- 4b. landing: a pile of 300 ------------------------------------------------- */
+#define LANDING_SEGS 7          /* 7 s in 100-frame segments (MAX_STATS stats lines) */
+
+static char *landing_script(int seed)
+{
+    char *buf;
+    size_t len;
+    FILE *f = script_open(&buf, &len);
+    int i;
+    if (!f) return NULL;
+    settings(f, 0.01, 0.5, 0.5, 0, 0);
+    fprintf(f, "seed = %d\nroom = 5\nrandom 300\nstats\n", seed);
+    for (i = 0; i < LANDING_SEGS; i++) fputs("step 100\nstats\n", f);
+    fclose(f);
+    return buf;
+}
+
+/* 300 random objects dropped into a 5 m room (mu 0.5, e 0.5): the frame at
+ * whose segment's end all rest, and the compute (sim_ms) up to it, seeds
+ * 1-3, one run each (a landing pile's path is chaotic).  Most of it is the
+ * islands answered at instants as bodies land on the pile (README). */
+static void landing(void)
+{
+    int seed;
+    header("4b. Landing: room = 5, random 300 (mu 0.5, e 0.5), 0.01 s frames, until all rest (7 s at most)");
+    for (seed = 1; seed <= 3; seed++) {
+        char *text = landing_script(seed), key[32], label[64];
+        static Timed t;
+        int j;
+        if (!text || !timed(text, 1, 0, &t)) {
+            printf("  seed %d: could not run\n", seed);
+            free(text);
+            continue;
+        }
+        free(text);
+        for (j = 1; j < t.run.nstats && t.run.s[j].resting < 300; j++) continue;
+        snprintf(key, sizeof key, "rest_frame_seed%d", seed);
+        snprintf(label, sizeof label, "seed %d: all 300 at rest by frame", seed);
+        row("landing", key, label, j < t.run.nstats ? fix(t.run.s[j].frames, 0) : "never", "", "");
+        snprintf(key, sizeof key, "ms_to_rest_seed%d", seed);
+        snprintf(label, sizeof label, "seed %d: sim_ms until then", seed);
+        row("landing", key, label, fix(seg_ms(&t.run, 0, j < t.run.nstats ? j : t.run.nstats - 1), 1), "", "");
+    }
+}
+
 /* ---- 5. office, heap on and off ------------------------------------------------ */
 static char *office_script(int heap)
 {
@@ -609,7 +656,7 @@ static void machine(void)
 int main(int argc, char **argv)
 {
     static const struct { const char *name; void (*run)(void); } benches[] = {
-        {"pyramid", pyramid}, {"tower", tower}, {"heavy", heavy}, {"pile", pile}, {"office", office}};
+        {"pyramid", pyramid}, {"tower", tower}, {"heavy", heavy}, {"pile", pile}, {"landing", landing}, {"office", office}};
     char *csv_text = NULL;
     size_t csv_len = 0, k;
     if (bench_shell_open(&shell, "bench_contact") != 0) return 1;
@@ -617,7 +664,7 @@ int main(int argc, char **argv)
         size_t j;
         for (j = 0; j < sizeof benches / sizeof benches[0] && strcmp(argv[k], benches[j].name); j++) continue;
         if (j == sizeof benches / sizeof benches[0]) {
-            fprintf(stderr, "bench_contact: no benchmark %s (pyramid, tower, heavy, pile, office)\n", argv[k]);
+            fprintf(stderr, "bench_contact: no benchmark %s (pyramid, tower, heavy, pile, landing, office)\n", argv[k]);
             return 1;
         }
     }
