@@ -27,14 +27,13 @@
  * seen through its island's contacts alone lay on one of them.
  *   Judged               what one pass over the touches finds of each body
  *   judge                the touches' pass
- *   hull_distance        how far a point is from a hull (0 inside)
- *   misses               one judged body's test
+ *   inside_support       one judged body's test, by region.c's support containment
  *   vrBalance_Mark       (balance.h)
  */
 #include <stdlib.h>
 #include <math.h>
 #include "balance.h"
-#include "convex2d.h"
+#include "region.h"
 #include "config.h"
 
 #define SUPPORT_GAP 2e-5      /* m: points this far beyond g_c (or the nearest) bear nothing yet */
@@ -86,39 +85,20 @@ static int judge(vrWorld *w, const vrTouch *t, int nt, vec3 up, Judged *j, int *
     return nb;
 }
 
-/* distance of q from the hull h[0..n) (1 point, a segment, or a
- * counter-clockwise polygon); 0 inside */
-static double hull_distance(const P2 *h, int n, P2 q)
-{
-    double best = INFINITY;
-    int i, inside = n >= 3;
-    if (n == 1) return p2_len(p2_sub(q, h[0]));
-    for (i = 0; i < n; i++) {
-        P2 a = h[i], b = h[(i + 1) % n], ab = p2_sub(b, a);
-        double len2 = p2_dot(ab, ab), s = len2 > 0 ? p2_dot(p2_sub(q, a), ab) / len2 : 0;
-        s = s < 0 ? 0 : s > 1 ? 1 : s;
-        best = fmin(best, p2_len(p2_sub(q, p2_lerp(a, b, s))));
-        if (p2_turn(a, b, q) < 0) inside = 0;
-        if (n == 2) break;
-    }
-    return inside ? 0 : best;
-}
-
-/* the judged body's support (its touches' points near its nearest), seen
- * along the force (u, v span the plane across it), misses its centre c */
-static int misses(const Judged *x, vec3 c, const vrTouch *t, const int *prev, double gc, vec3 u, vec3 v, P2 *pt,
-                  P2 *tmp)
+/* how far the judged body's centre c lies inside its support (its
+ * touches' points near g_c), seen along the force up: SPEC 3.1's
+ * containment of a support (region.h); +INFINITY with no points (nothing
+ * to judge), -INFINITY when out of memory */
+static double inside_support(const Judged *x, vec3 c, const vrTouch *t, const int *prev, double gc, vec3 up, vec3 *pt)
 {
     double bears = fmax(x->nearest, gc) + SUPPORT_GAP;
     int side, p, m = 0;
     for (side = x->last; side >= 0; side = prev[side]) {
         const vrTouch *k = &t[side / 2];
         for (p = 0; p < k->npoints; p++)
-            if (k->gap[p] <= bears) pt[m++] = p2(vec3_dot(k->point[p], u), vec3_dot(k->point[p], v));
+            if (k->gap[p] <= bears) pt[m++] = k->point[p];
     }
-    if (m == 0) return 0;   /* no points: nothing to judge */
-    m = vrP2_Hull(pt, m, tmp);
-    return hull_distance(pt, m, p2(vec3_dot(c, u), vec3_dot(c, v))) > BALANCE_SLACK;
+    return m == 0 ? INFINITY : vrRegion_Margin(pt, m, up, c);
 }
 
 int vrBalance_Mark(vrWorld *w, double t)
@@ -126,10 +106,9 @@ int vrBalance_Mark(vrWorld *w, double t)
     const vrTouch *touch = w->touches.t;
     int nt = w->touches.n, i, nb, most = 0, rc = 0;
     vrParams par = vrSettings_Params(&w->s);
-    vec3 accel = par.flight.accel, up, u, v;
+    vec3 accel = par.flight.accel, up, *pt;
     double gc = vrParams_Gap(&par);
     Judged *j;
-    P2 *pt = NULL, *tmp = NULL;
     int *prev;
     if (nt == 0 || vec3_len2(accel) == 0) return 0;   /* no force: nothing tips (flags 0 since the frame began) */
     j = malloc(2 * (size_t)nt * sizeof *j);
@@ -139,24 +118,26 @@ int vrBalance_Mark(vrWorld *w, double t)
         free(prev);
         return -1;
     }
-    up = vec3_normalize(vec3_neg(accel)), u = vec3_orthogonal(up), v = vec3_cross(up, u);
+    up = vec3_normalize(vec3_neg(accel));
     nb = judge(w, touch, nt, up, j, prev);
     for (i = 0; i < nb; i++) {
         w->isl_slot[j[i].id] = -1;    /* as it was: -1 everywhere */
         if (j[i].contacts > 0 && j[i].points > most) most = j[i].points;
     }
-    if (!(pt = malloc(((size_t)most + 1) * sizeof *pt)) || !(tmp = malloc(2 * ((size_t)most + 1) * sizeof *tmp))) rc = -1;
+    if (!(pt = malloc(((size_t)most + 1) * sizeof *pt))) rc = -1;
     for (i = 0; i < nb && rc == 0; i++) {
         vrObject *o = w->table.obj[j[i].id];
         vrPose pose;
+        double inside;
         o->tipping = 0;
         if (j[i].contacts <= 0) continue;
         vrBody_Pose(&o->body, t, &pose);
-        o->tipping = misses(&j[i], pose.p, touch, prev, gc, u, v, pt, tmp);
+        inside = inside_support(&j[i], pose.p, touch, prev, gc, up, pt);
+        if (inside == -INFINITY) rc = -1;
+        o->tipping = inside < -BALANCE_SLACK;
     }
     free(j);
     free(prev);
     free(pt);
-    free(tmp);
     return rc;
 }
