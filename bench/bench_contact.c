@@ -457,7 +457,10 @@ static void heavy(void)
 /* ---- 4. pile ----------------------------------------------------------------- */
 #define PILE_SEGS 6
 
-static char *pile_script(int seed)
+/* `random n` in a room of side `room` (mu 0.5, e 0.5, 0.01 s frames), then
+ * `segs` segments of `frames` frames, stats before and after each (the
+ * pile and the landing) */
+static char *random_room_script(int seed, int room, int n, int segs, int frames)
 {
     char *buf;
     size_t len;
@@ -465,11 +468,13 @@ static char *pile_script(int seed)
     int i;
     if (!f) return NULL;
     settings(f, 0.01, 0.5, 0.5, 0, 0);   /* the shell's caps: max_linear 8, max_angular 4 */
-    fprintf(f, "seed = %d\nroom = 4\nrandom 100\nstats\n", seed);
-    for (i = 0; i < PILE_SEGS; i++) fputs("step 1000\nstats\n", f);
+    fprintf(f, "seed = %d\nroom = %d\nrandom %d\nstats\n", seed, room, n);
+    for (i = 0; i < segs; i++) fprintf(f, "step %d\nstats\n", frames);
     fclose(f);
     return buf;
 }
+
+static char *pile_script(int seed) { return random_room_script(seed, 4, 100, PILE_SEGS, 1000); }
 
 static void pile_segments(const Timed *t)
 {
@@ -550,19 +555,7 @@ static void pile(void)
 /* ---- 4b. landing: a pile of 300 ------------------------------------------------- */
 #define LANDING_SEGS 7          /* 7 s in 100-frame segments (MAX_STATS stats lines) */
 
-static char *landing_script(int seed)
-{
-    char *buf;
-    size_t len;
-    FILE *f = script_open(&buf, &len);
-    int i;
-    if (!f) return NULL;
-    settings(f, 0.01, 0.5, 0.5, 0, 0);
-    fprintf(f, "seed = %d\nroom = 5\nrandom 300\nstats\n", seed);
-    for (i = 0; i < LANDING_SEGS; i++) fputs("step 100\nstats\n", f);
-    fclose(f);
-    return buf;
-}
+static char *landing_script(int seed) { return random_room_script(seed, 5, 300, LANDING_SEGS, 100); }
 
 /* 300 random objects dropped into a 5 m room (mu 0.5, e 0.5): the frame at
  * whose segment's end all rest, and the compute (sim_ms) up to it, seeds
@@ -575,7 +568,7 @@ static void landing(void)
     for (seed = 1; seed <= 3; seed++) {
         char *text = landing_script(seed), key[32], label[64];
         static Timed t;
-        int j;
+        int j, rested;
         if (!text || !timed(text, 1, 0, &t)) {
             printf("  seed %d: could not run\n", seed);
             free(text);
@@ -583,12 +576,13 @@ static void landing(void)
         }
         free(text);
         for (j = 1; j < t.run.nstats && t.run.s[j].resting < 300; j++) continue;
+        rested = j < t.run.nstats;
         snprintf(key, sizeof key, "rest_frame_seed%d", seed);
         snprintf(label, sizeof label, "seed %d: all 300 at rest by frame", seed);
-        row("landing", key, label, j < t.run.nstats ? fix(t.run.s[j].frames, 0) : "never", "", "");
+        row("landing", key, label, rested ? fix(t.run.s[j].frames, 0) : "never", "", "");
         snprintf(key, sizeof key, "ms_to_rest_seed%d", seed);
         snprintf(label, sizeof label, "seed %d: sim_ms until then", seed);
-        row("landing", key, label, fix(seg_ms(&t.run, 0, j < t.run.nstats ? j : t.run.nstats - 1), 1), "", "");
+        row("landing", key, label, fix(seg_ms(&t.run, 0, rested ? j : t.run.nstats - 1), 1), "", "");
     }
 }
 
