@@ -273,12 +273,13 @@ static int step(vrWorld *w, int *parent, int *in_island, double t, double h, vrU
     return rc;
 }
 
-/* the touching pairs at t, sorted by pair (h = 0: an instant's) */
-static int gather(vrWorld *w, double t, double h, char *err, size_t n)
+/* the touching pairs at t, sorted by pair (h = 0: an instant's, of the
+ * pair (a, b): those of its islands at least) */
+static int gather(vrWorld *w, double t, double h, int a, int b, char *err, size_t n)
 {
     int r;
     w->touches.n = 0;
-    r = vrOwners_Of(w)->touching(w, t, h, &w->touches, err, n);
+    r = vrOwners_Of(w)->touching(w, t, h, a, b, &w->touches, err, n);
     if (r == 0 && w->touches.n > 1) qsort(w->touches.t, (size_t)w->touches.n, sizeof *w->touches.t, by_pair);
     return r;
 }
@@ -394,7 +395,7 @@ static int touches_pair(const vrWorld *w, int a, int b)
 
 int vrIsland_Instant(vrWorld *w, double t, int a, int b, char *err, size_t n)
 {
-    int r = gather(w, t, 0, err, n);
+    int r = gather(w, t, 0, a, b, err, n);
     if (r != 0) return r;
     return touches_pair(w, a, b) ? solve_all(w, t, 0, a, b, err, n) : 1;
 }
@@ -433,7 +434,7 @@ int vrIsland_Step(vrWorld *w, double t, double h, char *err, size_t n)
 {
     int r;
     for (;;) {      /* each round wakes a resting island at least: it ends */
-        if ((r = gather(w, t, h, err, n)) != 0) return r;
+        if ((r = gather(w, t, h, -1, -1, err, n)) != 0) return r;
         if ((r = wake_touched(w, t)) < 0) return vrGeom_Fail(err, n, "out of memory");
         if (r == 0) break;
     }

@@ -84,6 +84,8 @@ void vrOwner_Free(vrOwner *o)
     free(o->again.v);
     free(o->marked.v);
     free(o->mark);
+    free(o->reach.v);
+    free(o->reached);
     vrResponder_Free(o->responder);
     free(o);
 }

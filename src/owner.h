@@ -120,6 +120,12 @@ void vrOwner_Stats(const vrOwner *o, vrOwnerStats *s);
  * touching pair that does not leave, and nothing marked.  Every clock must
  * be at t.  -1 on no memory. */
 int vrOwner_Touching(vrOwner *o, double t, double h, vrTouches *out);
+/* vrOwner_Touching at an instant (h = 0) for the islands of a and b only:
+ * the touches of each body reached from a or b through touches between
+ * bodies that can move (leaving or not: a solve may turn a leaving pair
+ * back, and island_group.c then joins it); the same touches of those
+ * bodies as vrOwner_Touching finds, none of the others.  -1 on no memory. */
+int vrOwner_TouchingFrom(vrOwner *o, double t, int a, int b, vrTouches *out);
 /* 1 when an island step (vrOwner_Touching, h > 0) would find no pair
  * here: none in the envelope, none flagged, none still to be made */
 int vrOwner_Quiet(const vrOwner *o);

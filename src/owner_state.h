@@ -54,8 +54,10 @@ typedef struct vrUndo {
 
 typedef struct vrIntList { int n, cap; int *v; } vrIntList;
 
-/* A pair's last contacts with their regions (see vrPair_Query) */
-#define REGION_MEMO 64
+/* A pair's last contacts with their regions (see vrPair_Query), in
+ * 2^REGION_MEMO_BITS slots */
+#define REGION_MEMO_BITS 12
+#define REGION_MEMO (1 << REGION_MEMO_BITS)
 typedef struct vrRegionMemo {
     long long order;          /* the pair; 0 with nothing kept (a pair's order is never 0: a < b) */
     unsigned long shape_a, shape_b;   /* the shapes' serials */
@@ -112,6 +114,9 @@ struct vrOwner {
     vrIntList marked;         /* pairs whose looks are to be taken back, marked in mark[] */
     unsigned char *mark;
     int markcap;
+    vrIntList reach;          /* an instant's islands, body by body (vrOwner_TouchingFrom) */
+    unsigned char *reached;   /* by body id: 1 queued, 2 its pairs looked at */
+    int reachedcap;
     vrResponder *responder;
     vrRegionMemo memo[REGION_MEMO];
     long long checks, heap_pops;

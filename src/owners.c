@@ -147,10 +147,12 @@ static int serial_overlapping(vrWorld *w, double tol, const int *ids, int nids, 
     return k < 0 ? vrGeom_Fail(err, n, "out of memory") : k;
 }
 
-static int serial_touching(vrWorld *w, double t, double h, vrTouches *out, char *err, size_t n)
+static int serial_touching(vrWorld *w, double t, double h, int a, int b, vrTouches *out, char *err, size_t n)
 {
     vrOwner_Advance(w->owner, t);
-    if (deliver(w) != 0 || vrOwner_Touching(w->owner, t, h, out) != 0) return vrGeom_Fail(err, n, "out of memory");
+    if (deliver(w) != 0
+        || (h == 0 ? vrOwner_TouchingFrom(w->owner, t, a, b, out) : vrOwner_Touching(w->owner, t, h, out)) != 0)
+        return vrGeom_Fail(err, n, "out of memory");
     return 0;
 }
 

@@ -21,9 +21,11 @@ typedef struct vrOwnerSet {
     int (*overlapping)(vrWorld *w, double tol, const int *ids, int nids, int (*out)[2], int max, char *err,
                        size_t n);
     /* an island step at t for a contact step of h (h = 0: the contacts of
-     * an instant, VR_TOUCH_INSTANT): every clock moves to t, and the pairs
-     * that touch there are appended to out (vrOwner_Touching) */
-    int (*touching)(vrWorld *w, double t, double h, vrTouches *out, char *err, size_t n);
+     * an instant): every clock moves to t, and the pairs that touch there
+     * are appended to out (vrOwner_Touching).  At an instant of the pair
+     * (a, b) only its islands' touches are needed: an owner set may give
+     * just those (the serial owner does: vrOwner_TouchingFrom) */
+    int (*touching)(vrWorld *w, double t, double h, int a, int b, vrTouches *out, char *err, size_t n);
 } vrOwnerSet;
 
 #endif

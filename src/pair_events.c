@@ -10,6 +10,7 @@
  *   keep_points, touch_of, vrOwner_Touching   the island step's contacts */
 #include <stdlib.h>
 #include <string.h>
+#include "grow.h"
 #include "owner_state.h"
 
 /* relative normal velocities of the region points, b's minus a's */
@@ -223,6 +224,17 @@ static int touch_of(vrOwner *o, vrPair *p, double t, double h, vrTouches *out)
     return 0;
 }
 
+/* a pair vrOwner_Touching looks at: scheduled, and inside the envelope
+ * (with the heap, the active list) or flagged since its last look; one
+ * flagged outside it only when the bounding spheres come within the
+ * region */
+static int may_touch(vrOwner *o, vrPair *p, double t)
+{
+    vec3 dir;
+    if (!(p->inside || p->flagged) || !p->scheduled) return 0;
+    return p->inside || vrPair_SphereGap(o, p, t, &dir) <= o->region;
+}
+
 /* (the order they are found in does not matter: the coordinator sorts
  * them by pair; with the heap the pairs in the envelope are the active
  * list, a pair outside it cannot touch, and one flagged since its last
@@ -238,11 +250,45 @@ int vrOwner_Touching(vrOwner *o, double t, double h, vrTouches *out)
     for (i = 0; i < n; i++) {
         int pi = !o->p.use_heap ? i : i < o->active.n ? o->active.v[i] : o->flagged.v[i - o->active.n];
         vrPair *p = &o->pair[pi];
-        vec3 dir;
-        if (!(p->inside || p->flagged) || !p->scheduled) continue;
         if (o->p.use_heap && i >= o->active.n && p->active >= 0) continue;   /* listed as active already */
-        if (!p->inside && vrPair_SphereGap(o, p, t, &dir) > o->region) continue;   /* far apart: no query */
-        if (touch_of(o, p, t, h, out) != 0) return -1;
+        if (may_touch(o, p, t) && touch_of(o, p, t, h, out) != 0) return -1;
     }
     return 0;
+}
+
+/* body id queued once, if this owner holds it and it can move */
+static int reach_body(vrOwner *o, int id)
+{
+    if (id < 0 || id >= o->bodycap || !o->body[id] || vrBody_Immovable(o->body[id]) || o->reached[id]) return 0;
+    o->reached[id] = 1;
+    return vrIntList_Push(&o->reach, id);
+}
+
+/* An instant's islands, from a and b out: each body's pairs looked at
+ * once (a pair of two reached bodies from the first of them), a touch
+ * reaching its other body.  A leaving touch reaches it too: the solve may
+ * turn that pair back (island_step.c), which joins the other body's
+ * island to it.  In a landing pile of 300 an instant's islands hold a
+ * quarter of the touches, and an answer looked at them all, 40 % of the
+ * landing's time. */
+int vrOwner_TouchingFrom(vrOwner *o, double t, int a, int b, vrTouches *out)
+{
+    int q, k, r = 0;
+    if (vrOwner_MakeFresh(o, t) != 0 || vrGrow((void **)&o->reached, &o->reachedcap, o->bodycap, 1) != 0) return -1;
+    memset(o->reached, 0, (size_t)o->bodycap);
+    o->reach.n = 0;
+    if (reach_body(o, a) != 0 || reach_body(o, b) != 0) r = -1;
+    if (r == 0 && o->reach.n == 0) return vrOwner_Touching(o, t, 0, out);   /* neither can move: the pair's own touch */
+    for (q = 0; r == 0 && q < o->reach.n; q++) {
+        int x = o->reach.v[q];
+        const vrIntList *l = &o->body_pairs[x];
+        for (k = 0; r == 0 && k < l->n; k++) {
+            vrPair *p = &o->pair[l->v[k]];
+            int y = p->a == x ? p->b : p->a, before = out->n;
+            if (o->reached[y] == 2 || !may_touch(o, p, t)) continue;
+            if ((r = touch_of(o, p, t, 0, out)) == 0 && out->n > before) r = reach_body(o, y);
+        }
+        o->reached[x] = 2;
+    }
+    return r;
 }

@@ -339,9 +339,10 @@ static int all_ahead(const vrSgp *s)
  * an island step would find nothing of its (quiet) and no state changed
  * since, the answer is known: none, and the workers do the step with the
  * next request (owed). */
-static int sgp_touching(vrWorld *w, double t, double h, vrTouches *out, char *err, size_t n)
+static int sgp_touching(vrWorld *w, double t, double h, int a, int b, vrTouches *out, char *err, size_t n)
 {
     vrSgp *s = w->sgp;
+    (void)a, (void)b;                    /* every worker's touches: the islands are found from them */
     vroc_contacts_t m;
     vrWireStates ws;
     int i, r;
