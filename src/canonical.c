@@ -114,9 +114,16 @@ static int face_is_support(const vrPolyhedron *p, vec3 d, int f)
 
 /* The support feature of b along world dir (Mirtich's features), searched
  * from the walk's feature `from`: 1 vertex, 2 = an edge, >= 3 = a face.
- * Sets that are none of these (tolerance corner cases) fall back to a face
- * inside the set, or to its highest vertex.  When the walk ended on a face
- * that is the support (a box on a table), it is taken at once. */
+ * Sets that are none of these fall back to a face inside the set, or to
+ * the segment between the set's two farthest vertices: an edge of no
+ * index (vrSupportFeature_Segment).  Such a set is mostly a line of
+ * vertices along a flat side (a boxy superquadric's meridian: three in a
+ * row within 1e-9 m of the top); taken as its highest vertex, the
+ * distance was measured from one end of the line, 8 mm where the bodies
+ * were 1 mm apart, and the pair left the envelope for a grid step (the
+ * physics fuzzer's seed 2043, heap on and off then parting).  When the
+ * walk ended on a face that is the support (a box on a table), it is
+ * taken at once. */
 int vrSupportFeature_Find(const vrPosed *b, vec3 dir, vrFeature from, vrSupportFeature *s)
 {
     const vrPolyhedron *p = b->p;
@@ -135,10 +142,23 @@ int vrSupportFeature_Find(const vrPosed *b, vec3 dir, vrFeature from, vrSupportF
         s->kind = VR_FACE;
         return set_to_face(p, s->index, &s->v);
     }
-    s->kind = VR_VERTEX;
-    s->index = s->v.n == 1 ? s->v.v[0] : vrPolyhedron_Climb(p, d, s->v.v[0], NULL);
-    s->v.n = 0;
-    return vrIntSet_Add(&s->v, s->index);
+    s->kind = s->v.n == 1 ? VR_VERTEX : VR_EDGE;
+    s->index = s->v.n == 1 ? s->v.v[0] : -1;
+    return 0;
+}
+
+/* the two of set s's vertices farthest apart (the first such pair in
+ * ascending order), body frame */
+static void farthest_pair(const vrPolyhedron *p, const vrIntSet *s, int *v0, int *v1)
+{
+    double most = -1;
+    int i, j;
+    *v0 = *v1 = s->v[0];
+    for (i = 0; i < s->n; i++)
+        for (j = i + 1; j < s->n; j++) {
+            double d2 = vec3_len2(vec3_sub(p->vert[s->v[i]], p->vert[s->v[j]]));
+            if (d2 > most) most = d2, *v0 = s->v[i], *v1 = s->v[j];
+        }
 }
 
 /* ---- canonical distance and normal ---------------------------------------- */
@@ -195,8 +215,9 @@ static double face_against(const vrPosed *other, const vrIntSet *s, vec3 n, doub
 /* end points of a vertex or edge support feature, world (a vertex twice) */
 void vrSupportFeature_Segment(const vrPosed *b, const vrSupportFeature *s, vec3 *p0, vec3 *p1)
 {
-    int t = s->kind == VR_EDGE ? b->p->edge_v[s->index][0] : s->index;
-    int h = s->kind == VR_EDGE ? b->p->edge_v[s->index][1] : s->index;
+    int t = s->kind == VR_EDGE && s->index >= 0 ? b->p->edge_v[s->index][0] : s->index;
+    int h = s->kind == VR_EDGE && s->index >= 0 ? b->p->edge_v[s->index][1] : s->index;
+    if (s->kind == VR_EDGE && s->index < 0) farthest_pair(b->p, &s->v, &t, &h);   /* a line of vertices */
     *p0 = vrPosed_Vertex(b, t);
     *p1 = vrPosed_Vertex(b, h);
 }

@@ -17,7 +17,8 @@ vec3 vrPosed_FacePlane(const vrPosed *b, int f, double *h);
 
 /* a support feature (Mirtich's features) and its vertices */
 typedef struct vrSupportFeature {
-    int kind, index;   /* VR_VERTEX / VR_EDGE / VR_FACE and its index */
+    int kind, index;   /* VR_VERTEX / VR_EDGE / VR_FACE and its index (an edge -1: the
+                          segment between the farthest two of v, vrSupportFeature_Find) */
     vrIntSet v;        /* its vertices, ascending */
 } vrSupportFeature;
 

@@ -277,6 +277,43 @@ static int test_walk_and_canonical_distance_under_a_long_edge(void)
     return 0;
 }
 
+/* A boxy superquadric (exp2 0.33) has meridians along which three
+ * vertices lie in a line on a flat side.  Lying on such a line over a
+ * plate's edge (the physics fuzzer's seed 2043, 1 mm apart), its support
+ * set along the walk's direction was those three, no edge and no face,
+ * and it was taken as its highest vertex, one end of the line: the
+ * distance came out 8.2 mm, from that end to the plate's edge.  Measured
+ * from every start of the walk, it is the brute-force distance. */
+static int test_a_line_of_support_vertices_is_measured_as_a_segment(void)
+{
+    Fix plate, sq;
+    vrPose pp, ps;
+    vrContact c;
+    char err[128];
+    double want;
+    int k;
+    ENSURE(box(&plate, 0.363652, 0.328345, 0.005) == 0);
+    memset(&sq, 0, sizeof sq);
+    sq.s.kind = VR_SHAPE_POLY;
+    ENSURE(vrPolyhedron_Superquadric(1.27387, 0.333495, vec3_make(0.0348613, 0.0504712, 0.0715489), 10, 10, &sq.own, err,
+                                     sizeof err) == 0);
+    sq.s.poly = sq.own;
+    pp = identity_at(-0.472245, 0.587386, 0.571637);
+    ps = vrPose_make(vec3_make(-0.30940657941177108, 0.91933223529411168, 0.61212493982975813),
+                     quat_make(0.48174187424034925, 0.54335522042363371, -0.51971767329011198, 0.45009266947117954));
+    want = vrClosest_BruteForce(plate.s.poly, &pp, sq.s.poly, &ps);
+    printf("    brute force %.17g m\n", want);
+    ENSURE(want > 9e-4 && want < 1.1e-3);
+    for (k = 0; k < 64; k++) {
+        vrWalkCache w = start_cache(&plate.s, &sq.s, k > 0);
+        ENSURE(vrContact_Distance(&plate.s, &pp, &sq.s, &ps, &w, &c) == 0);
+        ENSURE_NEAR(c.dist, want, 1e-9);
+    }
+    unfix(&plate);
+    unfix(&sq);
+    return 0;
+}
+
 /* The starts of a walk between two boxes: every pair of their features
  * (8 vertices, 12 edges, 6 faces each), vertices first, as k runs over
  * 0..BOX_STARTS-1 */
@@ -1115,6 +1152,7 @@ static const vrTest tests[] = {
     TEST(test_distance_is_brute_force_distance_and_independent_of_cache),
     TEST(test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance),
     TEST(test_walk_and_canonical_distance_under_a_long_edge),
+    TEST(test_a_line_of_support_vertices_is_measured_as_a_segment),
     TEST(test_touching_tilted_boxes_distance_is_brute_force),
     TEST(test_edges_crossing_at_rounding_distance_touch),
     TEST(test_overlapping_stack_boxes_are_seen_overlapping_from_every_start),
