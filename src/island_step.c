@@ -59,15 +59,10 @@ static int by_pair(const void *x, const void *y)
     return a->b < b->b ? -1 : a->b > b->b;
 }
 
-/* one island's solve: its bodies (object ids, in id order; statics too)
- * and its contacts */
-typedef struct Island {
-    int n, cap, nc, ccap;
-    int *id;
-    vrIslandBody *body;
-    vrIslandContact *c;
-    unsigned char *pushed;    /* by body: some contact's impulse acts on it (pushed_bodies) */
-} Island;
+/* one island's solve (the world's isl_work): its bodies (object ids, in
+ * id order; statics too), its contacts, and by body whether some
+ * contact's impulse acts on it (pushed_bodies) */
+typedef struct vrIslandWork Island;
 
 /* body id's index in the island, added if new; slot (by id, -1 where
  * none) finds it without a search (an island of a thousand bodies) */
@@ -253,23 +248,17 @@ static int leave_contact(vrWorld *w, const int *in_island, double t, vrUpdate *u
 
 static int step(vrWorld *w, int *parent, int *in_island, double t, double h, vrUpdate *up)
 {
-    Island is;
     int i, len, m, rc = 0, n = vrIsland_Union(w, parent, in_island, w->isl_ids);
     vrRooted *g = vrIsland_Group(w, parent, &m);
     const vrRooted *run;
-    memset(&is, 0, sizeof is);
     if (!g) return -1;
     for (i = 0; i < n && rc == 0; i++)
         if (vrIsland_Root(parent, w->isl_ids[i]) == w->isl_ids[i]) {
             run = vrIsland_Run(g, m, w->isl_ids[i], &len);
-            rc = solve_one(w, &is, run, len, w->isl_ids[i], t, h, up);
+            rc = solve_one(w, &w->isl_work, run, len, w->isl_ids[i], t, h, up);
         }
     if (rc == 0) rc = leave_contact(w, in_island, t, up);
     free(g);
-    free(is.id);
-    free(is.body);
-    free(is.pushed);
-    free(is.c);
     return rc;
 }
 
@@ -287,22 +276,17 @@ static int gather(vrWorld *w, double t, double h, int a, int b, char *err, size_
 /* the islands of a and b at an instant, solved */
 static int instant(vrWorld *w, int *parent, int *in_island, double t, int a, int b, vrUpdate *up)
 {
-    Island is;
+    Island *is = &w->isl_work;
     int ra, rb, m, len, rc = 0;
     vrRooted *g;
     const vrRooted *run;
-    memset(&is, 0, sizeof is);
     vrIsland_Union(w, parent, in_island, NULL);   /* the pair (a, b) is one of the touches */
     if (!(g = vrIsland_Group(w, parent, &m))) return -1;
     ra = a >= 0 && vrIsland_Moves(w, a) ? vrIsland_Root(parent, a) : -1;   /* a, b < 0: no pair (clang-tidy) */
     rb = b >= 0 && vrIsland_Moves(w, b) ? vrIsland_Root(parent, b) : -1;
-    if (ra >= 0) run = vrIsland_Run(g, m, ra, &len), rc = solve_one(w, &is, run, len, ra, t, 0, up);
-    if (rc == 0 && rb >= 0 && rb != ra) run = vrIsland_Run(g, m, rb, &len), rc = solve_one(w, &is, run, len, rb, t, 0, up);
+    if (ra >= 0) run = vrIsland_Run(g, m, ra, &len), rc = solve_one(w, is, run, len, ra, t, 0, up);
+    if (rc == 0 && rb >= 0 && rb != ra) run = vrIsland_Run(g, m, rb, &len), rc = solve_one(w, is, run, len, rb, t, 0, up);
     free(g);
-    free(is.id);
-    free(is.body);
-    free(is.pushed);
-    free(is.c);
     return rc;
 }
 

@@ -56,6 +56,10 @@ void vrWorld_Destroy(vrWorld *w)
     vrTouches_Free(&w->touches);
     free(w->contact_ids);
     vrIslandScratch_Free(&w->solve_scratch);
+    free(w->isl_work.id);
+    free(w->isl_work.body);
+    free(w->isl_work.c);
+    free(w->isl_work.pushed);
     free(w->isl_parent);
     free(w->isl_in);
     free(w->isl_slot);
