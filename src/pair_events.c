@@ -7,7 +7,8 @@
  *   too_fast           a contact impulse's test: faster than v_eps, or for a
  *                      pair of an island faster than its step allows
  *   vrPair_InsideEvents, vrPair_Impact, vrPair_Touch
- *   keep_points, touch_of, vrOwner_Touching   the island step's contacts */
+ *   keep_points, touch_of, may_touch, vrOwner_Touching   the island step's contacts
+ *   reach_body, vrOwner_TouchingFrom   an instant's: those of its islands */
 #include <stdlib.h>
 #include <string.h>
 #include "grow.h"

@@ -342,10 +342,10 @@ static int all_ahead(const vrSgp *s)
 static int sgp_touching(vrWorld *w, double t, double h, int a, int b, vrTouches *out, char *err, size_t n)
 {
     vrSgp *s = w->sgp;
-    (void)a, (void)b;                    /* every worker's touches: the islands are found from them */
     vroc_contacts_t m;
     vrWireStates ws;
     int i, r;
+    (void)a, (void)b;                    /* every worker's touches: the islands are found from them */
     if (!s->frame_open) {      /* the frame's first round: a restart redoes it from here */
         snapshot(w, s);
         s->frame_open = s->frame_fresh = 1;
