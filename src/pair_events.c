@@ -282,10 +282,10 @@ int vrOwner_TouchingFrom(vrOwner *o, double t, int a, int b, vrTouches *out)
     if (r == 0 && o->reach.n == 0) return vrOwner_Touching(o, t, 0, out);   /* neither can move: the pair's own touch */
     for (q = 0; r == 0 && q < o->reach.n; q++) {
         int x = o->reach.v[q];
-        const vrIntList *l = &o->body_pairs[x];
+        const vrIntList *l = &o->body_pairs[x], *partner = &o->body_partners[x];
         for (k = 0; r == 0 && k < l->n; k++) {
             vrPair *p = &o->pair[l->v[k]];
-            int y = p->a == x ? p->b : p->a, before = out->n;
+            int y = partner->v[k], before = out->n;
             if (o->reached[y] == 2 || !may_touch(o, p, t)) continue;
             if ((r = touch_of(o, p, t, 0, out)) == 0 && out->n > before) r = reach_body(o, y);
         }

@@ -7,12 +7,9 @@
 # the default eye (0,-8,3) looking at (0,0,1), 640x512, fov 45.  With time
 # running in real time (space) and the mouse as the hand (g), a press at
 # its centre (320,256) grabs it at the picked point p0 on its front, and
-# 10 moves of 8 pixels every 20 ms to the right drag it on the plane
-# through p0 facing the view.  On that plane a pixel is
-#     m = 2 t tan(22.5 deg) / 512 metres,   t = f . (p0 - eye),
-# f = (0,8,-2)/sqrt 68 the view's forward, along r = (1,0,0).  The drag is
-# then 8 m / 0.02 s = 400 m metres a second along +x (xdotool's real pace
-# on a loaded machine is slower; the hand's samples carry what it was).
+# 10 moves of 8 pixels every 20 ms to the right drag it along +x on the
+# plane through p0 facing the view, at the pace xdotool keeps (the hand's
+# samples carry what it was).
 # SPEC 8: the ball follows the hand rigidly and leaves with the velocity of
 # the hand's interpolated motion at the release instant, "a hand moving at a
 # constant velocity throws at exactly that velocity from exactly where it
