@@ -215,9 +215,10 @@ static double face_against(const vrPosed *other, const vrIntSet *s, vec3 n, doub
 /* end points of a vertex or edge support feature, world (a vertex twice) */
 void vrSupportFeature_Segment(const vrPosed *b, const vrSupportFeature *s, vec3 *p0, vec3 *p1)
 {
-    int t = s->index, h = s->index;
+    int t, h;
     if (s->kind == VR_EDGE && s->index >= 0) t = b->p->edge_v[s->index][0], h = b->p->edge_v[s->index][1];
     else if (s->kind == VR_EDGE) farthest_pair(b->p, &s->v, &t, &h);   /* a line of vertices */
+    else t = h = s->index;                                              /* a vertex */
     *p0 = vrPosed_Vertex(b, t);
     *p1 = vrPosed_Vertex(b, h);
 }
