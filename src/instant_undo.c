@@ -72,11 +72,14 @@ int vrInstantLog_Note(vrWorld *w, const vrEvent *ev, const vrUpdate *up, int tog
 }
 
 /* a dynamic body of ev that the instant's answers changed, the other
- * immovable: the first driven into the second */
-int vrInstantLog_Drives(const vrWorld *w, const vrEvent *ev)
+ * immovable: the first driven into the second.  With no force nothing
+ * lies on anything: the answers stay pairwise, and bounce as a cradle
+ * does (held, an elastic stack struck without gravity lost energy) */
+int vrInstantLog_Drives(const vrWorld *w, const vrEvent *ev, vec3 accel)
 {
     const vrInstantLog *l = &w->instant_log;
     const vrBody *A, *B;
+    if (vec3_len2(accel) == 0) return 0;
     if (ev->kind != VR_EV_CONTACT || !(ev->t == l->t) || l->held || l->together || answered(l, ev->order)) return 0;
     A = &w->table.obj[ev->a]->body, B = &w->table.obj[ev->b]->body;
     if (vrBody_Immovable(A) == vrBody_Immovable(B)) return 0;

@@ -43,8 +43,9 @@ void vrInstantLog_Frame(vrInstantLog *l);
 int vrInstantLog_Note(struct vrWorld *w, const vrEvent *ev, const vrUpdate *up, int together);
 /* 1 when ev, a follow-up at the noted instant, drives a body one of its
  * pairwise answers changed into an immovable body, through a pair not
- * yet answered: the instant is to be taken back */
-int vrInstantLog_Drives(const struct vrWorld *w, const vrEvent *ev);
+ * yet answered, under the global force accel (none: never): the instant
+ * is to be taken back */
+int vrInstantLog_Drives(const struct vrWorld *w, const vrEvent *ev, vec3 accel);
 /* the instant taken back: its states as they were put in up (to be
  * applied as an answer is), collisions as they were, held set; the
  * number of answers taken back (the loop counts an instant's answers), or

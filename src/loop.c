@@ -151,7 +151,7 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
             return r;
         }
         w->subframes += ev.t > f->ts ? vrSchedule_FirstPointAtOrAfter(&g, ev.t) : 0;
-        if (vrInstantLog_Drives(w, &ev)) {   /* the instant again, with islands (instant_undo.h) */
+        if (vrInstantLog_Drives(w, &ev, p->flight.accel)) {   /* the instant again, with islands (instant_undo.h) */
             if ((r = vrInstantLog_Undo(w, &w->update)) < 0 || vrWorld_ApplyUpdate(w, &w->update) != 0)
                 return vrGeom_Fail(err, n, "out of memory");
             f->instant = r < f->instant ? f->instant - r : 0;
