@@ -82,16 +82,17 @@ void vrIslandEnergy_PayBack(vrIslandBody *body, const vrIslandBody *before, int 
 }
 
 /* the floors cut to <= 0: the bounces go; bounced[i] = 1 for a contact
- * that had one */
-void vrIslandEnergy_NoBounces(vrIslandContact *c, int ncontact, int *bounced)
+ * that had one.  With hold, every point of such a contact is held (floor
+ * 0, none closing its gap): Poisson's bounce then gives back exactly what
+ * the compression took, which a point let close (floor < 0) and pushed
+ * would keep */
+void vrIslandEnergy_NoBounces(vrIslandContact *c, int ncontact, int *bounced, int hold)
 {
     int i, k;
     for (i = 0; i < ncontact; i++) {
         bounced[i] = 0;
-        for (k = 0; k < c[i].npoints; k++) {
-            bounced[i] |= c[i].floor[k] > 0;
-            c[i].floor[k] = vr_min(0, c[i].floor[k]);
-        }
+        for (k = 0; k < c[i].npoints; k++) bounced[i] |= c[i].floor[k] > 0;
+        for (k = 0; k < c[i].npoints; k++) c[i].floor[k] = hold && bounced[i] ? 0 : vr_min(0, c[i].floor[k]);
     }
 }
 

@@ -18,8 +18,8 @@ double vrIslandEnergy_StepGain(const vrIslandBody *body, const vrIslandBody *bef
 void vrIslandEnergy_PayBack(vrIslandBody *body, const vrIslandBody *before, int nbody, vrIslandContact *c,
                             int ncontact, double R, double C);
 /* the floors cut to <= 0: the bounces go; bounced[i] = 1 for a contact
- * that had one */
-void vrIslandEnergy_NoBounces(vrIslandContact *c, int ncontact, int *bounced);
+ * that had one, and with hold its every point held (floor 0) */
+void vrIslandEnergy_NoBounces(vrIslandContact *c, int ncontact, int *bounced, int hold);
 /* a bounceless solve's bounces given back as Poisson's, as far as they
  * keep the kinetic energy e0 before the solve (save: scratch for nbody) */
 void vrIslandEnergy_Poisson(vrIslandBody *body, int nbody, const vrIslandContact *c, int ncontact, const int *bounced,
