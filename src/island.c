@@ -5,6 +5,7 @@
  *   levels, shock_pass     the ground-up pass with lower bodies held still
  *   stalled                a try's sweeps judged not to reach tol by the cap
  *   reserve_*, solve       a try's state (the caller's scratch, island.h); a try
+ *   elastic_bounce, elastic_retry   an elastic island's Newton bounce that lost, as Poisson's
  *   solve_tries            the tries the energy check (island_energy.c) asks for, and a step's
  *                          sweeping on
  *   solve_with, vrIsland_Solve, vrIsland_SolveStep, vrIslandScratch_Free
