@@ -3,6 +3,7 @@
  *   vrWarm_Start                     a contact started from its pair's
  */
 #include <stdlib.h>
+#include <string.h>
 #include "warm.h"
 
 /* normals closer than this (cosine) are the same contact */
@@ -13,6 +14,21 @@ void vrWarm_Free(vrWarm *w)
     free(w->c);
     w->c = NULL;
     w->n = w->cap = 0;
+}
+
+int vrWarm_Copy(vrWarm *to, const vrWarm *from)
+{
+    to->n = 0;
+    to->structure = -1;
+    if (from->n > to->cap) {
+        vrWarmContact *m = realloc(to->c, (size_t)from->n * sizeof *m);
+        if (!m) return -1;
+        to->c = m, to->cap = from->n;
+    }
+    if (from->n > 0) memcpy(to->c, from->c, (size_t)from->n * sizeof *to->c);
+    to->n = from->n;
+    to->structure = from->structure;
+    return 0;
 }
 
 int vrWarm_Keep(vrWarm *w, int a, int b, double h, const vrIslandContact *c)

@@ -27,6 +27,9 @@ typedef struct vrWarm {
 } vrWarm;
 
 void vrWarm_Free(vrWarm *w);
+/* to becomes a copy of from (its list and structure); -1 when out of
+ * memory, to then empty and of no structure */
+int vrWarm_Copy(vrWarm *to, const vrWarm *from);
 /* keeps contact c of pair (a, b), solved for a step of h; -1 when out of memory */
 int vrWarm_Keep(vrWarm *w, int a, int b, double h, const vrIslandContact *c);
 void vrWarm_Sort(vrWarm *w);

@@ -113,5 +113,13 @@ for seed in 5 14 16; do
     "$vroc" -q "$tmp/w.cmd" >"$tmp/w.serial" 2>>"$tmp/w.err"
     agrees "switched heap and workers (edit fuzzer seed $seed)" "$tmp/w.serial" "$tmp/w.switch" "$tmp/w.err"
 done
+# a worker killed mid-frame (the edit fuzzer's kill mode, seed 482: worker
+# 1 dies in frame 6's second round) redoes the frame from its start, and
+# the island steps must start warm from there too: they started from the
+# killed frame's own last step, and the redone frame parted from serial
+VROC_FAULT_KILL=1:6:2 "$vroc" -q tests/data/kill_seed482.cmd >"$tmp/x.kill" 2>"$tmp/x.err"
+grep -v -E '^gps = ' tests/data/kill_seed482.cmd >"$tmp/x.cmd"
+"$vroc" -q "$tmp/x.cmd" >"$tmp/x.serial" 2>>"$tmp/x.err"
+agrees "a worker killed mid-frame (edit fuzzer seed 482)" "$tmp/x.serial" "$tmp/x.kill" "$tmp/x.err"
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]

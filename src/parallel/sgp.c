@@ -51,6 +51,10 @@ static int recover(vrWorld *w, char *err, size_t n)
         vrBody_Apply(&w->table.obj[s->snap.body[i].id]->body, &s->snap.body[i], &f);
     }
     vrContactSet_Lost(w);
+    /* the island steps start warm from where the frame started, as the
+     * serial run's did (the frame's own steps had moved it on: a redone
+     * frame parted from serial in its last bits, edit fuzzer seed 482) */
+    if (vrWarm_Copy(&w->warm, &s->snap_warm) != 0) w->warm.structure = -1;
     w->collisions = s->snap_collisions;
     w->island_steps = s->snap_island_steps;
     w->island_contacts = s->snap_island_contacts;
@@ -79,6 +83,7 @@ static void snapshot(vrWorld *w, vrSgp *s)
     s->snap_island_steps = w->island_steps;
     s->snap_island_contacts = w->island_contacts;
     s->snap_clamps = w->clamps;
+    vrWarm_Copy(&s->snap_warm, &w->warm);   /* no memory: structure -1, a redo starts cold */
     for (i = 0; i < s->n; i++) s->snap_counts[i] = vrSgp_Counts(s, i);
 }
 

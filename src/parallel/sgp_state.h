@@ -76,6 +76,7 @@ struct vrSgp {
     int frame_fresh;            /* the frame opened with an island step: its frame_start not sent yet */
     int sound_failed;           /* the last frame's sounds could not be published */
     vrUpdate snap, snap_pending;   /* the frame start, to redo the frame */
+    vrWarm snap_warm;           /* the island steps' warm start then (structure -1: lost) */
     long long snap_collisions, snap_island_steps, snap_island_contacts, snap_clamps;
     vrGpCounts snap_counts[VR_MAX_GPS];  /* each worker's counts then (before + now) */
     long long requests, received, foreign, malformed;

@@ -129,5 +129,6 @@ void vrSgp_Free(vrSgp *s)
     vrTouches_Free(&s->touches);
     vrUpdate_Free(&s->snap);
     vrUpdate_Free(&s->snap_pending);
+    vrWarm_Free(&s->snap_warm);
     free(s);
 }
