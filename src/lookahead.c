@@ -243,7 +243,11 @@ int vrOwner_FirstEvent(vrOwner *o, const vrGrid *g, int allow_instant, vrEvent *
     o->bp.t0 = g->t0;
     o->span_end = g->T;
     o->step_h = g->h;
-    o->closed_t = allow_instant ? NAN : g->t0;
+    /* closed: at t0 (0), or to the next grid point (-1: events creeping
+     * a rounding of t at a time, owner.h vrInstant_Span) */
+    o->closed_t = allow_instant > 0 ? NAN : g->t0;
+    o->closed_end = allow_instant >= 0 ? g->t0 : g->n >= 1 ? vrGrid_Point(g, 1) : g->T;
+    allow_instant = allow_instant > 0;
     /* kept looks stand on the grid they were made on, and not where an
      * instant is closed (an event there is dropped, pair_events.c) */
     if (o->p.keep_looks && (!allow_instant || !(g->a == o->kept_a && g->h == o->kept_h))) vrOwner_Advance(o, g->t0);

@@ -111,6 +111,7 @@ typedef struct Frame {
     long step_grid;          /* the steps its grid is cut into (0: none yet) */
     double instant_t;        /* the responses at the last instant so far: a frame ending */
     int instant;             /* at an instant that had its VR_INSTANT_MAX does not give it more */
+    int creep;               /* answers since the last one not a vrInstant_Span after the one before */
 } Frame;
 
 /* SPEC 7: an impulse that follows a response at its instant (a box
@@ -135,6 +136,14 @@ static int answered_together(const vrWorld *w, const Frame *f, const vrEvent *ev
     return follow_up && f->instant >= VR_PAIRWISE_MAX;
 }
 
+/* the owners' allow_instant: 1, 0 when the instant had its
+ * VR_INSTANT_MAX (none there), -1 when as many answers crept (none until
+ * the next grid point, owner.h vrInstant_Span) */
+static int allow_instant(const Frame *f)
+{
+    return f->creep >= VR_INSTANT_MAX ? -1 : f->instant < VR_INSTANT_MAX;
+}
+
 /* the events of [f->ts, end]: the owners' first event of all, answered,
  * until there is none before end.  0, -1, or VR_RESTART_FRAME. */
 static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *err, size_t n)
@@ -145,7 +154,7 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
         int r;
         span_grid(w, f->step_at, &f->step_grid, f->ts, end, f->T, p, &g);
         if (too_many_steps(w, &g, (double)w->subframes, VR_FRAME_STEPS_HARD_MAX, err, n) != 0) return -1;
-        r = vrOwners_Of(w)->first_event(w, &g, f->instant < VR_INSTANT_MAX, &ev, err, n);
+        r = vrOwners_Of(w)->first_event(w, &g, allow_instant(f), &ev, err, n);
         if (r != 1) {
             if (r == 0) w->subframes += g.n;
             return r;
@@ -174,6 +183,7 @@ static int run_span(vrWorld *w, Frame *f, double end, const vrParams *p, char *e
         if (ev.kind == VR_EV_IMPACT || ev.kind == VR_EV_CONTACT) w->collisions++;
         if (vrWorld_ApplyUpdate(w, &w->update) != 0) return vrGeom_Fail(err, n, "out of memory");
         reach_changed(w, &w->update, p);
+        if (ev.t != f->instant_t) f->creep = ev.t - f->instant_t <= vrInstant_Span(ev.t) ? f->creep + 1 : 0;
         f->instant = ev.t == f->instant_t ? f->instant + 1 : 1;
         f->instant_t = ev.t;
         f->ts = ev.t;
@@ -186,7 +196,7 @@ static void expect_look_ahead(vrWorld *w, const Frame *f, double at, double end,
 {
     long steps = 0;
     span_grid(w, at, &steps, at, end, f->T, p, &w->ahead.g);
-    w->ahead.allow = f->instant < VR_INSTANT_MAX;
+    w->ahead.allow = allow_instant(f);
     w->ahead.valid = (double)w->subframes + (double)w->ahead.g.n <= VR_FRAME_STEPS_HARD_MAX;
 }
 
@@ -242,6 +252,7 @@ static int run_frame(vrWorld *w, char *err, size_t n)
     f.ts = w->t;
     f.instant_t = w->instant_t;
     f.instant = w->instant;
+    f.creep = 0;
     w->subframes = 0;
     vrInstantLog_Frame(&w->instant_log);
     vrSounds_Frame(&w->sounds);
@@ -256,6 +267,7 @@ static int run_frame(vrWorld *w, char *err, size_t n)
             vrReach_Frame(&w->reach, w->dyn, w->ndyn, f.ts, f.T, &p.flight);
             f.instant = w->instant;
             f.instant_t = w->instant_t;
+            f.creep = 0;
             w->subframes = 0;
             vrInstantLog_Frame(&w->instant_log);
             k = -1;

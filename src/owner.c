@@ -40,7 +40,7 @@ vrOwner *vrOwner_Create(void)
     o->responder = vrResponder_Create();
     o->pending_t = -INFINITY;
     o->gather_t = NAN;       /* no island step yet: no pair is an island's */
-    o->closed_t = NAN;
+    o->closed_t = o->closed_end = NAN;
     o->gather_h = INFINITY;
     vrBroad_Init(&o->bp);
     o->p.use_heap = 1;

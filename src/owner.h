@@ -17,10 +17,20 @@
 #ifndef VROC_OWNER_H
 #define VROC_OWNER_H
 
+#include <float.h>
+#include <math.h>
 #include "effect.h"
 #include "schedule.h"
 
 #define VR_INSTANT_MAX 64      /* responses at one instant before moving on (SPEC 3.1) */
+/* Events that creep (each this close after the last, not at it) count
+ * against a VR_INSTANT_MAX of their own, and then close everything to the
+ * next grid point: a light table between the floor and a ball, each
+ * answer (and its take-back) leaving the other pair coming in, had its
+ * next event one rounding of t later, each a new instant, and the frame
+ * never ended (edit fuzzer seed 531).  1e-12 s (a body at 10 m/s moves
+ * 1e-11 m), or 16 roundings of t when those are more. */
+static inline double vrInstant_Span(double t) { return fmax(1e-12, 16 * DBL_EPSILON * fabs(t)); }
 #define VR_PENETRATION_TOL 1e-9
 #define VR_START_OVERLAP 1e-4  /* m: deeper overlaps refuse to start (SPEC 1.4, 7: a saved pile starts again) */
 #define VR_OVERLAP_SLOP VR_SHALLOW_OVERLAP  /* shallower overlaps of touching bodies are left as they

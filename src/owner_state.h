@@ -74,6 +74,7 @@ struct vrOwner {
     double span_end;          /* the end of the span being looked through: the next island step */
     double step_h;            /* the grid step of the span being looked through */
     double closed_t;          /* an instant that had its VR_INSTANT_MAX: no event there (NAN: none) */
+    double closed_end;        /* nor before this (the next grid point, when events crept) */
     double v_rest;            /* sqrt(2 |a| g_c), SPEC 3.1, 7 */
     vrBody **body;            /* by id, NULL when not held */
     vrIntList *body_pairs;    /* by id: indices of its pairs */

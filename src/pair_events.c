@@ -118,7 +118,7 @@ static int impulse_at(vrOwner *o, vrEvent *ev, vrPair *p, double tau, int kind, 
     vrPose pa, pb;
     vrContact c;
     vrApproach ap;
-    if (tau == o->closed_t) return 0;   /* a bisection that lands on a closed instant */
+    if (tau == o->closed_t || (tau > o->closed_t && tau < o->closed_end)) return 0;   /* a closed instant */
     vrPair_EventQuery(o, p, tau, &pa, &pb, &c);
     if (c.npoints == 0 || c.dist < -deeper) return 0;
     approach(o, p, tau, &pa, &pb, &c, &ap);

@@ -121,5 +121,10 @@ VROC_FAULT_KILL=1:6:2 "$vroc" -q tests/data/kill_seed482.cmd >"$tmp/x.kill" 2>"$
 grep -v -E '^gps = ' tests/data/kill_seed482.cmd >"$tmp/x.cmd"
 "$vroc" -q "$tmp/x.cmd" >"$tmp/x.serial" 2>>"$tmp/x.err"
 agrees "a worker killed mid-frame (edit fuzzer seed 482)" "$tmp/x.serial" "$tmp/x.kill" "$tmp/x.err"
+# answers that creep a rounding of t at a time close everything to the
+# next grid point (allow_instant -1 on the wire): the workers agree
+"$vroc" -q tests/data/creep_seed531.cmd >"$tmp/y.serial" 2>"$tmp/y.err"
+{ printf 'lcm_url = memq://\ngps = 2\n'; cat tests/data/creep_seed531.cmd; } | "$vroc" -q >"$tmp/y.par" 2>>"$tmp/y.err"
+agrees "creeping answers (edit fuzzer seed 531): 2 workers" "$tmp/y.serial" "$tmp/y.par" "$tmp/y.err"
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]
