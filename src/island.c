@@ -273,12 +273,16 @@ static int elastic_bounce(const vrIslandContact *c, int ncontact)
 static void elastic_retry(vrIslandBody *body, int nbody, vrIslandContact *c, int ncontact, int sweeps, double tol,
                          int stall, vrIslandStats *st, vrIslandScratch *x, double e0)
 {
-    double k = vrIslandEnergy_Kinetic(body, x->inertia, nbody);
+    double k;
     vrIslandBody *newton;
     vrIslandContact *cn;
     vrIslandStats sn = *st;
     int r;
-    if (!(k < e0 * (1 - ELASTIC_LOSS)) || !elastic_bounce(c, ncontact)) return;
+    /* the bounces first: most islands have friction or none, and their
+     * energy was measured already (solve_tries) */
+    if (!elastic_bounce(c, ncontact)) return;
+    k = vrIslandEnergy_Kinetic(body, x->inertia, nbody);
+    if (!(k < e0 * (1 - ELASTIC_LOSS))) return;
     newton = malloc((size_t)nbody * sizeof *newton);
     cn = malloc((size_t)ncontact * sizeof *cn);
     if (newton && cn) {   /* no memory: Newton's answer stands */

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "warm.h"
+#include "grow.h"
 
 /* normals closer than this (cosine) are the same contact */
 #define SAME_NORMAL 0.999
@@ -20,11 +21,7 @@ int vrWarm_Copy(vrWarm *to, const vrWarm *from)
 {
     to->n = 0;
     to->structure = -1;
-    if (from->n > to->cap) {
-        vrWarmContact *m = realloc(to->c, (size_t)from->n * sizeof *m);
-        if (!m) return -1;
-        to->c = m, to->cap = from->n;
-    }
+    if (vrGrow((void **)&to->c, &to->cap, from->n, sizeof *to->c) != 0) return -1;
     if (from->n > 0) memcpy(to->c, from->c, (size_t)from->n * sizeof *to->c);
     to->n = from->n;
     to->structure = from->structure;
