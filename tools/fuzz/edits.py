@@ -11,6 +11,9 @@ depend on SEED alone.  MODE only decides how it is run:
           VROC_FAULT_KILL from the seed)
   switch  the heap, the worker count (memq://) and the distribution
           switched at random between steps
+  save    serially, with a line `#SAVE` after one of the steps: run.sh
+          runs the script to there and `save`s, then a fresh `vroc`
+          reads the saved file and the rest (SPEC 11: bit for bit)
 Every mode must print the same dump (SPEC 3.2, 5).  tools/fuzz/run.sh
 compares them.  Optional developer tool: needs python3, not `make check`.
 """
@@ -20,6 +23,7 @@ import sys
 seed, mode = int(sys.argv[1]), sys.argv[2]
 r = random.Random(seed)                 # the scene and its edits
 m = random.Random(seed * 7 + 1)         # mode switches only
+s = random.Random(seed * 11 + 3)        # where the save is, only
 out = []
 P = out.append
 names, kinds, count = ["floor", "table"], {"floor": "cube", "table": "cube"}, [0]
@@ -102,7 +106,8 @@ def edit():
         P("cube table\n mass = %g" % r.choice([-1, 0.5, 3]))
 
 
-P({"serial": "", "noheap": "heap = 0", "udp": "gps = 2", "kill": "gps = 3", "switch": "lcm_url = memq://"}[mode])
+P({"serial": "", "noheap": "heap = 0", "udp": "gps = 2", "kill": "gps = 3", "switch": "lcm_url = memq://",
+   "save": ""}[mode])
 P("time_step = %g\ncollision_dist = %g\nmax_frames = 0\ngravity" % (r.choice([0.02, 0.05]), r.choice([0.005, 0.01])))
 P("cube floor\n size = (3, 3, 0.1)\n translate = (0, 0, -0.1)\n mass = -1")
 P("cube table\n size = (1, 0.8, 0.05)\n translate = (0, 0, 0.5)\n mass = -1\n elasticity = 0.3")
@@ -110,9 +115,13 @@ for _ in range(r.randint(3, 7)):
     new_object(0.8)
 switch()
 P("step %d" % r.randint(1, 10))
+steps = [len(out)]
 for _ in range(r.randint(3, 10)):
     edit()
     switch()
     P("step %d" % r.randint(1, 25))
+    steps.append(len(out))
+if mode == "save":
+    out.insert(s.choice(steps), "#SAVE")
 P("dump")
 print("\n".join(out))
