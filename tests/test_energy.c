@@ -148,7 +148,7 @@ static int test_a_box_shoved_along_by_a_heavy_one_keeps_momentum(void)
  * and the clamp cuts its spin.  The clamp once gave the rod the normal
  * speed its cut spin no longer gave its end, whatever that cost, and the
  * impact raised the energy from 32 J to 39.6 J (the pile's rises of up to
- * 2.3 J, README).  A clamp only takes energy out: no frame may end above
+ * 2.3 J, docs/STATUS.md).  A clamp only takes energy out: no frame may end above
  * m v^2 / 2 by more than 1e-9 E, and the clamp must have bitten. */
 static int test_a_ball_at_the_cap_on_a_rods_end_gains_no_energy_from_the_clamp(void)
 {
