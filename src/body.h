@@ -125,6 +125,11 @@ void vrBody_Pose(vrBody *b, double t, vrPose *pose);
  * sphere, so only its centre is computed (the identity stands in for its
  * turning); what needs a sphere's spin takes vrBody_Pose */
 void vrBody_ShapePose(vrBody *b, double t, vrPose *pose);
+/* 1 when b's flight, as anchored, reaches max_linear within (from, to]
+ * after its anchor: the force sped it up to the cap, and it flies on at
+ * it (SPEC 3.2), a cut that stats clamps counts (a cap at the anchor
+ * itself is the anchor's own, counted where it was cut) */
+int vrBody_CapReached(const vrBody *b, double from, double to);
 void vrBody_Position(const vrBody *b, double t, vec3 *x);
 void vrBody_Velocity(const vrBody *b, double t, vec3 *v);
 /* world angular velocity at t (needs the orientation at t) */

@@ -90,6 +90,12 @@ static void set_cap(vrMotion *m, double max_linear)
     m->tcap = m->over_cap ? INFINITY : cap_time(m->v0, m->a, max_linear);
 }
 
+int vrBody_CapReached(const vrBody *b, double from, double to)
+{
+    double at = b->m.t0 + b->m.tcap;
+    return b->m.tcap > 0 && at > from && at <= to;
+}
+
 void vrBody_Position(const vrBody *b, double t, vec3 *x)
 {
     const vrMotion *m = &b->m;

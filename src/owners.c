@@ -94,8 +94,10 @@ int vrWorld_ApplyUpdate(vrWorld *w, vrUpdate *up)
     w->applied++;
     if (vrRest_WakeDependents(w, up, up->body[0].t) != 0) return -1;
     for (i = 0; i < up->n; i++) {
+        vrBody *b = &w->table.obj[up->body[i].id]->body;
         vrRest_KeepFramePose(w, w->table.obj[up->body[i].id]);   /* before its anchor moves */
-        w->clamps += vrBody_Apply(&w->table.obj[up->body[i].id]->body, &up->body[i], &f);
+        w->clamps += vrBody_CapReached(b, w->t, up->body[i].t);   /* its flight met the cap this frame */
+        w->clamps += vrBody_Apply(b, &up->body[i], &f);
         if (up->body[i].contact && vrContactSet_Note(w, up->body[i].id) != 0) return -1;
     }
     return vrUpdate_Merge(&w->pending, up, w->table.n);

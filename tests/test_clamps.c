@@ -116,9 +116,46 @@ static int test_balls_spun_past_the_cap_by_an_impact_are_cut_once_each(void)
     return 0;
 }
 
+/* SPEC 3.2: a body the force speeds up to max_linear flies on at it (the
+ * thesis's eq. 5), and that cut counts as an event's does: a ball dropped
+ * 5 m onto a floor with e = 1 came back to 3.4 m with clamps = 0 and no
+ * note.  A ball falling from rest reaches 8 m/s at 8 / 9.8 = 0.816 s, in
+ * frame 17 of 0.05 s: one clamp then, and no more while it flies on at
+ * the cap.  A second ball, dropped onto a floor so that it meets it at
+ * 0.83 s, in the same frame, is counted once, when its anchor moves. */
+static int test_a_ball_falling_to_the_cap_counts_one_clamp(void)
+{
+    vrWorld *w = vrScene_World(0.05, 0.01, 9.8);
+    vrObjectId far, hit;
+    vrScene_Set(w, vrScene_ShellCaps);
+    far = vrScene_Sphere(w, "far", R, vec3_make(0, 0, 100), vec3_zero(), 1, 1);
+    ENSURE(vrScene_Step(w, 16) == 0);
+    ENSURE(vrScene_Stats(w).clamps == 0);
+    ENSURE(vrScene_Step(w, 1) == 0);
+    ENSURE(vrScene_Stats(w).clamps == 1);
+    ENSURE(vrScene_Step(w, 20) == 0);
+    ENSURE(vrScene_Stats(w).clamps == 1);
+    ENSURE_NEAR(vrScene_State(w, far).linear_vel[2], -8, 1e-12);
+    vrWorld_Destroy(w);
+    w = vrScene_World(0.05, 0.01, 9.8);
+    vrScene_Set(w, vrScene_ShellCaps);
+    vrScene_Box(w, "floor", vec3_make(2, 2, 0.05), vec3_make(0, 0, -0.05), -1, 0.5);
+    hit = vrScene_Sphere(w, "hit", R, vec3_make(0, 0, R + 0.5 * 9.8 * (8 / 9.8) * (8 / 9.8) + 8 * (0.83 - 8 / 9.8)),
+                         vec3_zero(), 1, 0.5);
+    ENSURE(vrScene_Step(w, 18) == 0);
+    printf("    %lld responses, %lld clamps; vz %.9f m/s after the bounce\n", vrScene_Stats(w).collisions,
+           vrScene_Stats(w).clamps, vrScene_State(w, hit).linear_vel[2]);
+    ENSURE(vrScene_Stats(w).collisions == 1);
+    ENSURE(vrScene_Stats(w).clamps == 1);
+    ENSURE(vrScene_State(w, hit).linear_vel[2] > 3);
+    vrWorld_Destroy(w);
+    return 0;
+}
+
 static const vrTest tests[] = {
     TEST(test_a_ball_spun_past_the_cap_on_a_frictionless_floor_is_cut_once),
     TEST(test_balls_spun_past_the_cap_by_an_impact_are_cut_once_each),
+    TEST(test_a_ball_falling_to_the_cap_counts_one_clamp),
 };
 
 const vrTestSuite vrSuite_Clamps = {"clamps", tests, TEST_COUNT(tests), NULL, NULL, 0};
