@@ -20,7 +20,8 @@
 #   subframes_thesis = ceil(0.01 * 2 * 1.99 / 0.02) = 2        (table 5.1)
 #
 # The thesis's 2 subframes need a slow world or a thick envelope: here a
-# 2 cm collision distance (objects rest 2 cm above what holds them) and a
+# 2 cm collision distance (for the schedule: objects rest at the 1 mm
+# contact gap, min(collision_dist, 1 mm), SPEC 7) and a
 # 2 m/s speed cap (things stop accelerating after a 20 cm fall).
 #
 # Run:   vroc scenes/desks.cmd

@@ -17,7 +17,7 @@
 #        tools/contact-sheet /tmp/simple simple.png
 
 time_step = 0.01         # 100 frames per simulated second
-collision_dist = 0.01    # 1 cm contact envelope: balls rest 1 cm above the top
+collision_dist = 0.01    # 1 cm envelope for the schedule; balls rest at the 1 mm contact gap
 max_linear = 2.95        # m/s: a ball stops accelerating after a 0.44 m fall
 gravity
 

@@ -74,7 +74,7 @@ const Command sh_commands[] = {
     VERB("quit", "quit", "leave vroc", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_quit),
     VERB("exit", "exit", "leave vroc (the same as quit)", G_SYSTEM, F_BARE, R_ANY, 0, 0, run_quit),
     SETTING("time_step", "time_step = t", "frame time step, s (0 halts time)", "0.1", G_SYSTEM, K_NUM, R_CLOSED, 0, VR_TIME_MAX, time_step),
-    SETTING("collision_dist", "collision_dist = d", "collision distance: the contact envelope, m", "0.25", G_SYSTEM, K_NUM, R_CLOSED, VR_LENGTH_MIN, VR_LENGTH_MAX, collision_dist),
+    SETTING("collision_dist", "collision_dist = d", "collision distance: the contact envelope, m (bodies rest min(d, 1 mm) apart)", "0.25", G_SYSTEM, K_NUM, R_CLOSED, VR_LENGTH_MIN, VR_LENGTH_MAX, collision_dist),
     SETTING("internal_step", "internal_step = i", "force the internal step, s (0: automatic)", "0", G_SYSTEM, K_NUM, R_CLOSED, 0, VR_TIME_MAX, internal_step),
     SETTING("max_linear", "max_linear = v", "maximum linear speed, m/s", "8", G_SYSTEM, K_NUM, R_GT, 0, VR_SPEED_MAX, max_linear),
     SETTING("max_angular", "max_angular = v", "maximum angular speed, rad/s", "4", G_SYSTEM, K_NUM, R_GT, 0, VR_SPEED_MAX, max_angular),
@@ -292,6 +292,11 @@ static int axis_value(Lexer *lx, const Command *c, Stmt *st, char *err, size_t n
     if (lx_vector(lx, c->name, st->v, 3, err, n) != 0) return -1;
     if (st->v[0] == 0 && st->v[1] == 0 && st->v[2] == 0) {
         snprintf(err, n, "the vector of '%s' must be non-zero", c->name);
+        return -1;
+    }
+    lx_skip_blanks(lx);
+    if (lx_at_end(lx)) {   /* the number after the vector forgotten: say which */
+        snprintf(err, n, "'%s' needs its number after the vector (%s)", c->name, c->syntax);
         return -1;
     }
     if (lx_number(lx, c->name, &st->v[3], err, n) != 0) return -1;
