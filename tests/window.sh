@@ -73,7 +73,7 @@ fi
 
 # ---- 3. the prompt answers while the window runs; space runs time ----------
 if [ -n "$id" ]; then
-    say gravity
+    say gravity "max_linear = 100"   # they fall 1.5 s, past 8 m/s: no cap, and so no note on stderr
     sleep 0.2
     xdotool key --window "$id" space
     sleep 1.5
