@@ -7,6 +7,7 @@ eye = (0, -2.8, 2.2)
 look = (0, 0, 0.8)
 time_step = 0.05
 collision_dist = 0.01
+max_angular = 50             # the thesis's 4 rad/s would cut the box's tumble (and a note says so)
 gravity
 
 cube table
