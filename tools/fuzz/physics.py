@@ -27,7 +27,10 @@ gravity or none; then steps it in blocks and, after every block, checks
     same checks (no overlap, energy never growing, same bits);
   - heap = 0, and workers (memq://, in this process's memory: 2 dealt
     round robin for even seeds, 3 by the improved distribution for odd), print
-    the same dumps as heap = 1 serially, to the bit (SPEC 3.2, 5).
+    the same dumps as heap = 1 serially, to the bit (SPEC 3.2, 5);
+  - saved after a random frame and read back by a fresh vroc with the
+    rest of the script, the run prints the same dumps (SPEC 11: rest,
+    islands, warm starts and all).
 Prints the seeds that break one, with the first broken check.  Optional
 developer tool (python3), not `make check`; run.sh runs the other fuzzer.
 """
@@ -316,7 +319,36 @@ def check(vroc, seed):
         os.unlink(qpath)
         if q is None or dumps(q) != dumps(p):
             return "%s prints other dumps" % mode.replace("\n", ", "), path
-    return None, path
+    problem = saved_and_read(vroc, seed, text, dumps(p))
+    return (problem, path) if problem else (None, path)
+
+
+def saved_and_read(vroc, seed, text, want):
+    """SPEC 11: the run saved after a random frame and the save read by a
+    fresh vroc with the rest of the script print the run's dumps"""
+    lines = text.split("\n")
+    cuts = [i for i, line in enumerate(lines) if line == "dump"][:-1]
+    if not cuts:
+        return None
+    k = random.Random(seed * 13 + 5).choice(cuts)
+    fd, saved = tempfile.mkstemp(suffix=".vroc")
+    os.close(fd)
+    try:
+        head, hpath = run(vroc, "\n".join(lines[:k + 1]) + "\nsave %s\n" % saved)
+        os.unlink(hpath)
+        if head is None or head.returncode > 1:
+            return "save: the run to the save failed"
+        with open(saved) as f:
+            state = f.read()
+        tail, tpath = run(vroc, state + "\n".join(lines[k + 1:]))
+        os.unlink(tpath)
+        if tail is None or tail.returncode > 1 or "Sanitizer" in tail.stderr:
+            return "save: the saved run read back failed %s" % (tail and tail.stderr.strip()[:200])
+        if dumps(head) + dumps(tail) != want:
+            return "save after dump %d of %d, read back, prints other dumps" % (cuts.index(k) + 1, len(cuts) + 1)
+    finally:
+        os.unlink(saved)
+    return None
 
 
 def main():
