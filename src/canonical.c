@@ -264,36 +264,6 @@ static void point_features(const vrPosed *a, const vrPosed *b, vrCanon *c)
     c->hb = min_height(b, &c->sb.v, c->n);
 }
 
-/* A lone top vertex along world dir with an edge square to dir as nearly
- * as the segment formula's parallel edges (VR_PARALLEL_SIN2) is that edge.
- * Near-parallel edges take the middle of their overlap, so the walk's
- * direction is square to one edge and up to 1e-6 rad off the other: that
- * one's far end drops more than SUPPORT_TOL below its near end, and
- * measured from the near end alone, two boxes 1.9 cm apart side by side
- * were 9 cm apart and the heap put their pair off for 144 s (the physics
- * fuzzer's seed 10473, heap on and off then parting).  -1 when out of
- * memory. */
-static int square_edge(const vrPosed *b, vec3 dir, vrSupportFeature *s)
-{
-    const vrPolyhedron *p = b->p;
-    vec3 d = mat33_tmulv(&b->pose->R, dir);
-    int v = s->v.v[0], k, best = -1;
-    double bestv = 0;
-    for (k = p->vert_edge_start[v]; k < p->vert_edge_start[v + 1]; k++) {
-        int e = p->vert_edge[k];
-        vec3 u = vec3_sub(p->vert[vrPolyhedron_OtherEnd(p, e, v)], p->vert[v]);
-        double h = vec3_dot(d, u), s2 = h * h / vec3_len2(u);
-        if (s2 <= VR_PARALLEL_SIN2 * vec3_len2(d) && (best < 0 || s2 < bestv)) bestv = s2, best = e;
-    }
-    if (best < 0) return 0;
-    s->kind = VR_EDGE;
-    s->index = best;
-    s->v.n = 0;
-    if (vrIntSet_Add(&s->v, p->edge_v[best][0]) || vrIntSet_Add(&s->v, p->edge_v[best][1])) return -1;
-    vrIntSet_Sort(&s->v);
-    return 0;
-}
-
 /* Steps 2-4 of the rule: support features along dir (a) and -dir (b),
  * then normal and distance from them. */
 int vrCanon_Compute(const vrPosed *a, const vrPosed *b, vec3 dir, vrFeature fa, vrFeature fb, vrCanon *c)
@@ -310,10 +280,8 @@ int vrCanon_Compute(const vrPosed *a, const vrPosed *b, vec3 dir, vrFeature fa, 
         c->n = vec3_neg(nb);
         c->hb = -hf;
         c->ha = c->hb - c->dist;
-    } else {
-        if ((c->sa.kind == VR_VERTEX && square_edge(a, dir, &c->sa))
-            || (c->sb.kind == VR_VERTEX && square_edge(b, vec3_neg(dir), &c->sb))) return -1;
-        if (c->sa.kind != VR_EDGE || c->sb.kind != VR_EDGE || !edge_edge_normal(a, b, c)) point_features(a, b, c);
+    } else if (c->sa.kind != VR_EDGE || c->sb.kind != VR_EDGE || !edge_edge_normal(a, b, c)) {
+        point_features(a, b, c);
     }
     return 0;
 }
