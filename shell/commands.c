@@ -294,7 +294,6 @@ static int axis_value(Lexer *lx, const Command *c, Stmt *st, char *err, size_t n
         snprintf(err, n, "the vector of '%s' must be non-zero", c->name);
         return -1;
     }
-    lx_skip_blanks(lx);
     if (lx_at_end(lx)) {   /* the number after the vector forgotten: say which */
         snprintf(err, n, "'%s' needs its number after the vector (%s)", c->name, c->syntax);
         return -1;

@@ -104,21 +104,22 @@ int vrRest_WakeIsland(vrWorld *w, int island, vrUpdate *up, double t)
  * (the physics fuzzer's seed 12384: e = 1, no force, the bottom box of a
  * struck stack, leaving the floor at 4 mm/s, rested with 2.4e-5 J of
  * 0.95 J).  Then only a body that does not move rests. */
-static int drifting(const vrWorld *w, const vrBody *b)
+static int drifting(const vrBody *b, int forceless)
 {
-    return vec3_len2(vrSettings_Flight(&w->s).accel) == 0 && (vec3_len2(b->m.v0) > 0 || vec3_len2(b->m.L) > 0);
+    return forceless && (vec3_len2(b->m.v0) > 0 || vec3_len2(b->m.L) > 0);
 }
 
 /* the body's own part: in a contact step, not hit, still or slow over
- * the window (its counts, o->quiet_frames and o->slow_frames, move on) */
-static void qualifies(vrWorld *w, const vrUpdate *up, vrObject *o)
+ * the window (its counts, o->quiet_frames and o->slow_frames, move on);
+ * forceless: the world has no global force */
+static void qualifies(vrWorld *w, const vrUpdate *up, vrObject *o, int forceless)
 {
     vrBody *b = &o->body;
     double dt = w->s.time_step, dx, turn, motion;
     int rise, still, slow;
     vrPose p;
     if (!b->contact || b->hit || o->tipping || b->island < 0 || !o->have_frame_pose || vrUpdate_Find(up, up->n, b->id)
-        || drifting(w, b)) {
+        || drifting(b, forceless)) {
         o->quiet_frames = o->slow_frames = 0;
         return;
     }
@@ -146,7 +147,7 @@ static int rests(const vrWorld *w, const vrObject *o)
 int vrRest_FrameEnd(vrWorld *w, vrUpdate *up)
 {
     unsigned char *fails;
-    int k, n = up->n;
+    int k, n = up->n, forceless = vec3_len2(vrSettings_Flight(&w->s).accel) == 0;
     /* SPEC 8: while the hand holds a body nothing starts to rest: a body
      * lying on the held one, frozen, would hang in the air when the hand
      * moves it away (a kinematic body wakes what it meets, not what it
@@ -160,7 +161,7 @@ int vrRest_FrameEnd(vrWorld *w, vrUpdate *up)
         vrObject *o = w->table.obj[w->contact_ids[k]];
         if (!o || !o->live || o->body.is_static || o->body.resting) continue;
         if (o->body.island < 0) continue;
-        qualifies(w, up, o);
+        qualifies(w, up, o, forceless);
         if (!rests(w, o)) fails[o->body.island] = 1;
     }
     for (k = 0; k < w->ncontact_ids; k++) {

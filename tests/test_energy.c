@@ -308,6 +308,22 @@ static int test_a_ball_knocked_up_off_the_floor_flies_under_gravity_at_once(void
 
 static void uncapped(vrSettings *s) { s->max_linear = 1000, s->max_angular = 100000; }
 
+/* object id turned by rot (axis, angle), moving at v and spinning at
+ * spin: the world's energy at the start (*e0) and after frames (*e); -1
+ * when a step fails */
+static int launched(vrWorld *w, vrObjectId id, const double rot[4], const double v[3], const double spin[3],
+                    long frames, double *e0, double *e)
+{
+    vrScene_Edit(w, id, vrScene_SetRotation, rot);
+    vrScene_Edit(w, id, vrScene_SetVelocity, v);
+    vrScene_Edit(w, id, vrScene_SetSpin, spin);
+    if (vrScene_Step(w, 0) != 0) return -1;
+    *e0 = vrScene_Stats(w).energy;
+    if (vrScene_Step(w, frames) != 0) return -1;
+    *e = vrScene_Stats(w).energy;
+    return 0;
+}
+
 /* e = 1, no force: a flat 10 kg box turning at 26 rad/s strikes a wall
  * with one corner while another, 0.5 mm off, comes in slowly (the physics
  * fuzzer's seed 5462, from t = 0.62).  The island step bounces the first
@@ -327,13 +343,7 @@ static int test_a_box_bouncing_a_corner_off_a_wall_keeps_its_energy_with_e_1(voi
     vrScene_Box(w, "wall", vec3_make(0.1, 1.6, 1.6), vec3_make(1.6, 0, 1.5), -1, 1);
     box = vrScene_Box(w, "box", vec3_make(0.119081, 0.0989892, 0.0431589),
                       vec3_make(1.4048505677670504, 1.1162906426862302, 2.1373594400000004), 10, 1);
-    vrScene_Edit(w, box, vrScene_SetRotation, rot);
-    vrScene_Edit(w, box, vrScene_SetVelocity, v);
-    vrScene_Edit(w, box, vrScene_SetSpin, spin);
-    ENSURE(vrScene_Step(w, 0) == 0);
-    e0 = vrScene_Stats(w).energy;
-    ENSURE(vrScene_Step(w, 5) == 0);
-    e = vrScene_Stats(w).energy;
+    ENSURE(launched(w, box, rot, v, spin, 5, &e0, &e) == 0);
     printf("    %lld island steps; energy %.12f -> %.12f J (%.3g of it)\n", vrScene_Stats(w).island_steps, e0, e,
            (e - e0) / e0);
     ENSURE(vrScene_Stats(w).island_steps >= 1);
@@ -367,13 +377,7 @@ static int test_a_box_rattling_between_the_floor_and_a_heavy_box_keeps_its_energ
                 vec3_make(-0.43259759948664639, -0.4925821746382486, 0.14505203338343134), 5, 1);
     d3 = vrScene_Box(w, "d3", vec3_make(0.111747, 0.100409, 0.106091),
                      vec3_make(-0.2201586000000002, -0.38506465963147707, 0.3934864), 0.5, 1);
-    vrScene_Edit(w, d3, vrScene_SetRotation, rot);
-    vrScene_Edit(w, d3, vrScene_SetVelocity, v);
-    vrScene_Edit(w, d3, vrScene_SetSpin, spin);
-    ENSURE(vrScene_Step(w, 0) == 0);
-    e0 = vrScene_Stats(w).energy;
-    ENSURE(vrScene_Step(w, 5) == 0);
-    e = vrScene_Stats(w).energy;
+    ENSURE(launched(w, d3, rot, v, spin, 5, &e0, &e) == 0);
     printf("    %lld answers; energy %.12f -> %.12f J (%.3g of it)\n", vrScene_Stats(w).collisions, e0, e, (e - e0) / e0);
     ENSURE(vrScene_Stats(w).collisions >= 20);   /* the rattle */
     ENSURE_MSG(fabs(e - e0) <= 1e-8 * e0, "energy %.12f -> %.12f J", e0, e);
