@@ -314,6 +314,38 @@ static int test_a_line_of_support_vertices_is_measured_as_a_segment(void)
     return 0;
 }
 
+/* Two boxes side by side, a vertical edge of each facing the other's,
+ * 1.9 cm apart, one turned 2e-8 rad about y (the physics fuzzer's seed
+ * 10473).  The segment formula takes the edges as parallel, so the walk's
+ * direction is square to the upright edge only; along it the tilted
+ * edge's lower end lay 1e-9 m below its upper end, its support set was
+ * that upper end alone, above the other box's top, and the distance came
+ * out 9 cm.  From every start of the walk it is the brute-force one. */
+static int test_a_hair_tilted_edge_beside_an_edge_is_measured_as_an_edge(void)
+{
+    Fix a, b;
+    vrPose pa, pb;
+    vrContact c;
+    double want;
+    int k;
+    ENSURE(box(&a, 0.127118, 0.0612887, 0.0638309) == 0);
+    ENSURE(box(&b, 0.0555466, 0.0875789, 0.0429582) == 0);
+    pa = vrPose_make(vec3_make(-0.67775096568921889, 0.19510767959052822, 0.15021912277157609),
+                     quat_make(1, 0, 1.0463901177861201e-08, -1.0033700830268226e-21));
+    pb = identity_at(-0.48807756363636362, 0.36120076363636366, 0.083363192066115699);
+    want = vrClosest_BruteForce(a.s.poly, &pa, b.s.poly, &pb);
+    printf("    brute force %.17g m\n", want);
+    ENSURE(want > 0.018 && want < 0.019);
+    for (k = 0; k < 64; k++) {
+        vrWalkCache w = start_cache(&a.s, &b.s, k > 0);
+        ENSURE(vrContact_Distance(&a.s, &pa, &b.s, &pb, &w, &c) == 0);
+        ENSURE_NEAR(c.dist, want, 1e-9);
+    }
+    unfix(&a);
+    unfix(&b);
+    return 0;
+}
+
 /* The starts of a walk between two boxes: every pair of their features
  * (8 vertices, 12 edges, 6 faces each), vertices first, as k runs over
  * 0..BOX_STARTS-1 */
@@ -1153,6 +1185,7 @@ static const vrTest tests[] = {
     TEST(test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance),
     TEST(test_walk_and_canonical_distance_under_a_long_edge),
     TEST(test_a_line_of_support_vertices_is_measured_as_a_segment),
+    TEST(test_a_hair_tilted_edge_beside_an_edge_is_measured_as_an_edge),
     TEST(test_touching_tilted_boxes_distance_is_brute_force),
     TEST(test_edges_crossing_at_rounding_distance_touch),
     TEST(test_overlapping_stack_boxes_are_seen_overlapping_from_every_start),
