@@ -38,17 +38,18 @@ int vrPair_ClearByWalk(vrOwner *o, int pi, double t)
 /* the gap between the bodies' bounding spheres about their centres at t (a
  * lower bound on their distance) and the unit direction from a's centre to
  * b's (zero when the centres meet) */
-double vrPair_SphereGap(const vrOwner *o, const vrPair *p, double t, vec3 *dir)
+static double sphere_gap(const vrOwner *o, const vrPair *p, double t, vrCentres *c, vec3 *dir)
 {
     const vrBody *A = o->body[p->a], *B = o->body[p->b];
-    vec3 xa, xb, gap;
-    double len;
-    vrBody_Position(A, t, &xa);
-    vrBody_Position(B, t, &xb);
-    gap = vec3_sub(xb, xa);
-    len = vec3_len(gap);
-    *dir = len > 0 ? vec3_scale(gap, 1.0 / len) : vec3_zero();
-    return len - A->r_out - B->r_out;
+    vrCentres_At(A, B, t, c);
+    *dir = c->len > 0 ? vec3_scale(vec3_sub(c->xb, c->xa), 1.0 / c->len) : vec3_zero();
+    return c->len - A->r_out - B->r_out;
+}
+
+double vrPair_SphereGap(const vrOwner *o, const vrPair *p, double t, vec3 *dir)
+{
+    vrCentres c;
+    return sphere_gap(o, p, t, &c, dir);
 }
 
 /* A cheap look first: the bounding spheres about the centres are a lower
@@ -63,12 +64,13 @@ double vrPair_SphereGap(const vrOwner *o, const vrPair *p, double t, vec3 *dir)
 int vrPair_ClearBySpheres(vrOwner *o, int pi, double t)
 {
     vrPair *p = &o->pair[pi];
+    vrCentres c;
     vec3 dir;
     double gap, key;
     if (!cheap_look_allowed(o, p)) return 0;
-    gap = vrPair_SphereGap(o, p, t, &dir);
+    gap = sphere_gap(o, p, t, &c, &dir);
     if (gap <= o->p.d || vec3_len2(dir) == 0) return 0;
-    key = vrSchedule_SphereKey(o->body[p->a], o->body[p->b], t, gap, dir, o->p.d, &o->p.flight);
+    key = vrSchedule_SphereKey(o->body[p->a], o->body[p->b], t, &c, gap, dir, o->p.d, &o->p.flight);
     if (!(key > t)) return 0;
     p->t_check = t;
     vrPair_Settle(o, pi, 0, key);

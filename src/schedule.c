@@ -237,18 +237,16 @@ static double speed_cap(const vrBody *b, const vrFlight *f)
     return !moves(b) ? 0 : b->m.over_cap ? INFINITY : f->max_linear;
 }
 
-static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f, int turning,
-                  double enough)
+/* the key from the velocities va, vb at t (key_with's caller may have them) */
+static double key_with(vrBody *a, vrBody *b, double t, vec3 va, vec3 vb, double dist, vec3 n, double d,
+                       const vrFlight *f, int turning, double enough)
 {
     vrClosing whole, rate;
-    vec3 va, vb;
     double known;
     whole.room = dist - d - KEY_MARGIN;
     whole.cmax = speed_cap(a, f) + speed_cap(b, f);
     if (whole.room <= 0) return t;
     if (whole.cmax <= 0) return INFINITY;
-    vrBody_Velocity(a, t, &va);
-    vrBody_Velocity(b, t, &vb);
     whole.dv = vec3_sub(vb, va);
     /* until either body reaches the speed cap the relative acceleration is
      * exactly a_b - a_a (0 between two free bodies under the same force) */
@@ -264,6 +262,15 @@ static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d,
     rate.spin = spin_rate(a) + spin_rate(b);
     known = t + vr_max(key_for(&whole, n, a, b), key_for(&rate, n, a, b));
     return vr_max(known, key_by_vertices(a, b, t, n, d, known, enough));
+}
+
+static double key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f, int turning,
+                  double enough)
+{
+    vec3 va, vb;
+    vrBody_Velocity(a, t, &va);
+    vrBody_Velocity(b, t, &vb);
+    return key_with(a, b, t, va, vb, dist, n, d, f, turning, enough);
 }
 
 double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)
@@ -287,18 +294,14 @@ double vrSchedule_KeyUpTo(vrBody *a, vrBody *b, double t, double dist, vec3 n, d
  * below 1e-13 m): a path that enters the envelope goes 1e-9 m deep into
  * D's sphere, far above the root's rounding unless the centres are
  * kilometres apart.  No root before t1: no contact before t1. */
-static double linear_key(const vrBody *a, const vrBody *b, double t, double room)
+static double linear_key(const vrBody *a, const vrBody *b, double t, const vrCentres *c, vec3 va, vec3 vb,
+                         double room)
 {
-    vec3 xa, xb, va, vb, dx, dv;
-    double len, D, tau, t1;
+    vec3 dx, dv;
+    double len = c->len, D, tau, t1;
     if (!moves(a) || !moves(b) || a->m.a.x != b->m.a.x || a->m.a.y != b->m.a.y || a->m.a.z != b->m.a.z) return t;
-    vrBody_Position(a, t, &xa);
-    vrBody_Position(b, t, &xb);
-    vrBody_Velocity(a, t, &va);
-    vrBody_Velocity(b, t, &vb);
-    dx = vec3_sub(xb, xa);
+    dx = vec3_sub(c->xb, c->xa);
     dv = vec3_sub(vb, va);
-    len = vec3_len(dx);
     D = len - room;
     if (!(D > 0)) return t;
     tau = first_root(vec3_dot(dv, dv), 2 * vec3_dot(dx, dv), room * (len + D));
@@ -306,9 +309,21 @@ static double linear_key(const vrBody *a, const vrBody *b, double t, double room
     return t + vr_min(tau, t1);
 }
 
-double vrSchedule_SphereKey(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f)
+void vrCentres_At(const vrBody *a, const vrBody *b, double t, vrCentres *c)
 {
-    double bound = key(a, b, t, dist, n, d, f, 0, INFINITY), room = dist - d - KEY_MARGIN;
+    vrBody_Position(a, t, &c->xa);
+    vrBody_Position(b, t, &c->xb);
+    c->len = vec3_len(vec3_sub(c->xb, c->xa));
+}
+
+double vrSchedule_SphereKey(vrBody *a, vrBody *b, double t, const vrCentres *c, double dist, vec3 n, double d,
+                            const vrFlight *f)
+{
+    vec3 va, vb;
+    double bound, room = dist - d - KEY_MARGIN;
+    vrBody_Velocity(a, t, &va);   /* once for both bounds */
+    vrBody_Velocity(b, t, &vb);
+    bound = key_with(a, b, t, va, vb, dist, n, d, f, 0, INFINITY);
     if (!(room > 0)) return bound;
-    return vr_max(bound, linear_key(a, b, t, room));
+    return vr_max(bound, linear_key(a, b, t, c, va, vb, room));
 }

@@ -77,9 +77,14 @@ double vrSchedule_Key(vrBody *a, vrBody *b, double t, double dist, vec3 n, doubl
  * before it once the key is surely that late (the vertex bounds stop there) */
 double vrSchedule_KeyUpTo(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f,
                           double enough);
+/* two bodies' centres at t and their distance: what a look by the
+ * bounding spheres measures, and the sphere key reads again */
+typedef struct vrCentres { vec3 xa, xb; double len; } vrCentres;
+void vrCentres_At(const vrBody *a, const vrBody *b, double t, vrCentres *c);
 /* The same from the bounding spheres about the centres (a sphere's own),
- * which do not change as the bodies turn: dist is the distance between the
- * spheres and n the direction between the centres. */
-double vrSchedule_SphereKey(vrBody *a, vrBody *b, double t, double dist, vec3 n, double d, const vrFlight *f);
+ * which do not change as the bodies turn: c the centres at t, dist the
+ * distance between the spheres and n the direction between the centres. */
+double vrSchedule_SphereKey(vrBody *a, vrBody *b, double t, const vrCentres *c, double dist, vec3 n, double d,
+                            const vrFlight *f);
 
 #endif

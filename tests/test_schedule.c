@@ -110,6 +110,7 @@ static int test_sphere_keys_are_exact_for_free_pairs(void)
     ENSURE(vrPolyhedron_Cube(vec3_make(0.2, 0.2, 0.2), &cube_poly, NULL, 0) == 0);
     for (trial = 0; trial < 5000; trial++) {
         vrBody a, b;
+        vrCentres centres;
         vec3 xa, xb, va, vb, dir;
         long double dx[3], dv[3], A = 0, B = 0, C, disc, tau = -1, D;
         double d = 0.01 + 0.1 * uni(), gap, key, t = 0.25;
@@ -123,14 +124,14 @@ static int test_sphere_keys_are_exact_for_free_pairs(void)
         vrBody_Anchor(&a, 0, rvec(1), va, quat_identity(), vec3_scale(rvec(1), 0.1), &f);
         vrBody_Anchor(&b, 0, vec3_add(vec3_make(3, 0, 0), rvec(1)), vec3_add(va, vec3_add(vec3_make(-4, 0, 0), rvec(0.8))),
                       quat_identity(), vec3_scale(rvec(1), 0.1), &f);
-        vrBody_Position(&a, t, &xa);
-        vrBody_Position(&b, t, &xb);
+        vrCentres_At(&a, &b, t, &centres);
+        xa = centres.xa, xb = centres.xb;
         vrBody_Velocity(&a, t, &va);
         vrBody_Velocity(&b, t, &vb);
         dir = vec3_normalize(vec3_sub(xb, xa));
         gap = vec3_len(vec3_sub(xb, xa)) - a.r_out - b.r_out;
         if (gap <= d + 1e-6) continue;
-        key = vrSchedule_SphereKey(&a, &b, t, gap, dir, d, &f);
+        key = vrSchedule_SphereKey(&a, &b, t, &centres, gap, dir, d, &f);
         dx[0] = (long double)xb.x - xa.x, dx[1] = (long double)xb.y - xa.y, dx[2] = (long double)xb.z - xa.z;
         dv[0] = (long double)vb.x - va.x, dv[1] = (long double)vb.y - va.y, dv[2] = (long double)vb.z - va.z;
         D = (long double)a.r_out + b.r_out + d;
