@@ -3,7 +3,8 @@
 
 Each seed makes a closed room (floor, walls, ceiling), thin and rotated
 static plates and blocks, and dynamic spheres, boxes and superquadrics of
-different masses, elasticities, speeds (up to 12 m/s) and spins, under
+different masses (half the seeds also 1..3 convex polyhedra: OFF prisms,
+point clouds and tetrahedra, their files under $TMPDIR/vroc-physics-off), elasticities, speeds (up to 12 m/s) and spins, under
 gravity or none; then steps it in blocks and, after every block, checks
   - nothing interpenetrates: a `start` that runs no frame (max_frames = 0)
     is refused when two objects overlap (SPEC 1.4), so an object that
@@ -155,12 +156,92 @@ def scene(seed, mode="heap = 1"):
             P(" linear_vel = (%g,%g,%g)" % tuple(r.uniform(-speed, speed) / 1.8 for _ in range(3)))
         if r.random() < 0.6:
             P(" angular_vel = (%g,%g,%g)" % tuple(r.uniform(-8, 8) for _ in range(3)))
+    polyhedra(seed, P, statics, placed, reach, mass, inertia, free, conservative)
     P("start\nstats")
     blocks = r.randint(3, 8)
     for _ in range(blocks):
         P("step 1\ndump\n" * r.randint(5, 60) + "stats\nstart")
     return "\n".join(out) + "\n", dict(conservative=conservative, free=free, plates=plates, reach=reach, mass=mass,
                                        inertia=inertia)
+
+
+OFF_DIR = os.path.join(tempfile.gettempdir(), "vroc-physics-off")
+
+
+def off_path(seed, i):
+    return os.path.join(OFF_DIR, "s%d_q%d.off" % (seed, i))
+
+
+def hull_points(q):
+    """an OFF polyhedron's points: a prism of 3..6 sides (parallel edges and
+    faces, the near-parallel cases of the canonical features), a cloud of
+    5..12 points on an ellipsoid (general hulls), or a tetrahedron"""
+    kind = q.choice(["prism", "cloud", "tetra"])
+    if kind == "prism":
+        k, rad, h, phi = q.randint(3, 6), q.uniform(.03, .06), q.uniform(.02, .06), q.uniform(0, 2 * math.pi)
+        return [(rad * math.cos(phi + 2 * math.pi * i / k), rad * math.sin(phi + 2 * math.pi * i / k), z)
+                for z in (-h, h) for i in range(k)]
+    axes = (q.uniform(.03, .06), q.uniform(.03, .06), q.uniform(.03, .06))
+    pts = []
+    for _ in range(4 if kind == "tetra" else q.randint(5, 12)):
+        v = [q.gauss(0, 1) for _ in range(3)]
+        n = math.sqrt(sum(x * x for x in v)) or 1
+        pts.append(tuple(axes[j] * v[j] / n for j in range(3)))
+    return pts
+
+
+def flat(pts):
+    """no four points far enough out of one plane to make a solid"""
+    a = pts[0]
+    for b in pts[1:]:
+        for c in pts[1:]:
+            for d in pts[1:]:
+                u, v, w = ([x[j] - a[j] for j in range(3)] for x in (b, c, d))
+                if abs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
+                       + u[2] * (v[0] * w[1] - v[1] * w[0])) > 1e-6:
+                    return False
+    return True
+
+
+def polyhedra(seed, P, statics, placed, reach, mass, inertia, free, conservative):
+    """half the seeds get 1..3 convex polyhedra from OFF point clouds (their
+    own stream: the rest of each seed's scene is what it was).  The hull's
+    centre of mass is its body origin: no vertex lies further from it than
+    twice the points' reach about their mean"""
+    q = random.Random(seed * 11 + 7)
+    if q.random() < 0.5:
+        return
+    os.makedirs(OFF_DIR, exist_ok=True)
+    for i in range(q.randint(1, 3)):
+        for _ in range(200):
+            c = (q.uniform(-1.3, 1.3), q.uniform(-1.3, 1.3), q.uniform(0.25, 2.75))
+            if all(math.dist(c, s) > 0.75 for s in statics) and all(math.dist(c, p) > 0.4 for p in placed):
+                break
+        else:
+            continue
+        pts = hull_points(q)
+        if flat(pts):
+            continue
+        mean = [sum(v[j] for v in pts) / len(pts) for j in range(3)]
+        pts = [tuple(v[j] - mean[j] for j in range(3)) for v in pts]
+        with open(off_path(seed, i), "w") as f:
+            f.write("OFF\n%d 0 0\n" % len(pts) + "".join("%.17g %.17g %.17g\n" % v for v in pts))
+        placed.append(c)
+        name = "q%d" % i
+        reach[name] = 2 * max(math.sqrt(sum(x * x for x in v)) for v in pts)
+        mass[name] = q.choice([0.1, 0.5, 1, 3, 10])
+        inertia[name] = None                   # no closed form here
+        P("polyhedron %s\n file = %s\n translate = (%g,%g,%g)" % ((name, off_path(seed, i)) + c))
+        P(" mass = %g\n elasticity = %g" % (mass[name], 1 if conservative else q.choice([0, 0.5, 1, q.uniform(0, 1)])))
+        if q.random() < 0.5:
+            P(" rotate = (%g,%g,%g) %g" % (q.uniform(-1, 1), q.uniform(-1, 1), q.uniform(-1, 1) + 0.01, q.uniform(0, 3)))
+        speed = q.choice([0, 1, 4, 12])
+        if free:
+            P(" linear_vel = (%g,%g,%g)" % tuple((1.5 * (k == 2) - c[k]) * max(speed, 1) / 1.5 for k in range(3)))
+        else:
+            P(" linear_vel = (%g,%g,%g)" % tuple(q.uniform(-speed, speed) / 1.8 for _ in range(3)))
+        if q.random() < 0.6:
+            P(" angular_vel = (%g,%g,%g)" % tuple(q.uniform(-8, 8) for _ in range(3)))
 
 
 def rotation(axis, angle):
@@ -361,6 +442,9 @@ def main():
             print("seed %d: %s  [%s]" % (seed, problem, path), flush=True)
         else:
             os.unlink(path)
+            for i in range(3):
+                if os.path.exists(off_path(seed, i)):
+                    os.unlink(off_path(seed, i))
     print("seeds %d..%d: %d problems" % (lo, hi, bad))
     sys.exit(1 if bad else 0)
 
