@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """edits.py SEED MODE — a random scene script with edits between steps.
 
-The scene (a floor, a table, spheres, boxes and superquadrics) and its edits
+The scene (a floor, a table, spheres, boxes, superquadrics and, for half
+the seeds, convex polyhedra whose OFF files go under
+$TMPDIR/vroc-edits-off) and its edits
 (mass, position, velocity, size, delete, new objects, settings, `random`)
 depend on SEED alone.  MODE only decides how it is run:
   serial  serially, with the heap
@@ -17,8 +19,11 @@ depend on SEED alone.  MODE only decides how it is run:
 Every mode must print the same dump (SPEC 3.2, 5).  tools/fuzz/run.sh
 compares them.  Optional developer tool: needs python3, not `make check`.
 """
+import math
+import os
 import random
 import sys
+import tempfile
 
 seed, mode = int(sys.argv[1]), sys.argv[2]
 r = random.Random(seed)                 # the scene and its edits
@@ -63,9 +68,37 @@ def new_object(z0):
         P(" linear_vel = (%g,%g,%g)" % tuple(r.uniform(-1, 1) for _ in range(3)))
 
 
+def polyhedra():
+    """half the seeds also get 1..2 convex polyhedra (OFF point clouds: a
+    prism or an ellipsoid's points) from their own stream, so the rest of
+    the scene is drawn as before; they join the objects the edits pick"""
+    q = random.Random(seed * 13 + 9)
+    if q.random() < 0.5:
+        return
+    where = os.path.join(tempfile.gettempdir(), "vroc-edits-off")
+    os.makedirs(where, exist_ok=True)
+    for i in range(q.randint(1, 2)):
+        if q.random() < 0.5:
+            k, rad, h = q.randint(3, 6), q.uniform(.04, .08), q.uniform(.03, .08)
+            pts = [(rad * math.cos(2 * math.pi * j / k), rad * math.sin(2 * math.pi * j / k), z) for z in (-h, h) for j in range(k)]
+        else:
+            pts = [tuple(q.uniform(-.07, .07) for _ in range(3)) for _ in range(q.randint(6, 12))]
+        path = os.path.join(where, "e%d_%d.off" % (seed, i))
+        with open(path, "w") as f:
+            f.write("OFF\n%d 0 0\n" % len(pts) + "".join("%.17g %.17g %.17g\n" % v for v in pts))
+        name = "h%d" % i
+        names.append(name)
+        kinds[name] = "polyhedron"
+        P("polyhedron %s\n file = %s" % (name, path))
+        P(" translate = (%g,%g,%g)" % (q.uniform(-0.9, 0.9), q.uniform(-0.7, 0.7), q.uniform(1.0, 2.0)))
+        P(" elasticity = %g" % q.uniform(0, 1))
+        if q.random() < 0.5:
+            P(" angular_vel = (%g,%g,%g)" % tuple(q.uniform(-3, 3) for _ in range(3)))
+
+
 def edit():
     c, name = r.random(), r.choice(names)
-    kind, obj = kinds[name], name.startswith("o")
+    kind, obj = kinds[name], name.startswith(("o", "h"))
     if c < 0.12 and obj:
         P("%s %s\n mass = %g" % (kind, name, r.choice([-1, 1, 2, 0.5])))
     elif c < 0.22 and obj:
@@ -113,6 +146,7 @@ P("cube floor\n size = (3, 3, 0.1)\n translate = (0, 0, -0.1)\n mass = -1")
 P("cube table\n size = (1, 0.8, 0.05)\n translate = (0, 0, 0.5)\n mass = -1\n elasticity = 0.3")
 for _ in range(r.randint(3, 7)):
     new_object(0.8)
+polyhedra()
 switch()
 P("step %d" % r.randint(1, 10))
 steps = [len(out)]
