@@ -13,7 +13,9 @@
  * poses alone, by fixed formulas (vrCanon_Compute):
  *   a's face -> its normal;  else b's face -> minus its normal;
  *   edge x edge (not parallel) -> the cross product;
- *   otherwise the closest points of the two features.
+ *   otherwise the closest points of the two features, a vertex feature
+ *   from which an edge goes nearer the other's closest point taken as
+ *   that edge (the support set missed its far end by a rounding).
  * The contact region (region.c) is built from the same features.  (Left to
  * chance: a set member within rounding of the 1e-9 m threshold.)
  *   support_set                      the near-support set
@@ -21,6 +23,8 @@
  *   set_to_face, face_is_support
  *   face_against, edge_edge_normal,  the normal and distance by the kinds of
  *   point_features                   the two features
+ *   nearer_edge, complete,           a vertex feature completed to its edge
+ *   edges_and_vertices
  *
  * No static state; scratch memory lives on the stack unless a set outgrows
  * its inline buffer.
