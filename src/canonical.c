@@ -37,8 +37,9 @@
 #include "segment.h"
 
 #define SUPPORT_TOL 1e-9   /* tau: near-support set tolerance (m) */
-#define COMPLETE_TOL 1e-7  /* m: an edge from a vertex feature going nearer than this
-                            * misses the distance by under 1e-14 m/(2 dist): left */
+#define COMPLETE_TOL 1e-12 /* m: an edge from a vertex feature going no nearer than this
+                            * is left: the distance is then at most this long (far
+                            * above the rounding of coordinates of a 60 m room) */
 
 
 /* The near-support set of b in world direction dir: the vertices within
