@@ -15,7 +15,9 @@
  *   edge x edge (not parallel) -> the cross product;
  *   otherwise the closest points of the two features, a vertex feature
  *   from which an edge goes nearer the other's closest point taken as
- *   that edge (the support set missed its far end by a rounding).
+ *   that edge (the support set missed its far end by a rounding), and of
+ *   two edges taken as parallel, an end nearer than their overlap's
+ *   middle as a vertex.
  * The contact region (region.c) is built from the same features.  (Left to
  * chance: a set member within rounding of the 1e-9 m threshold.)
  *   support_set                      the near-support set
@@ -23,7 +25,8 @@
  *   set_to_face, face_is_support
  *   face_against, edge_edge_normal,  the normal and distance by the kinds of
  *   point_features                   the two features
- *   nearer_edge, complete,           a vertex feature completed to its edge
+ *   nearer_edge, complete,           a vertex feature completed to its edge,
+ *   nearer_end, reduce,              parallel edges reduced to an end
  *   edges_and_vertices
  *
  * No static state; scratch memory lives on the stack unless a set outgrows
@@ -219,13 +222,19 @@ static double face_against(const vrPosed *other, const vrIntSet *s, vec3 n, doub
     return dist;
 }
 
+/* the end vertices of a vertex or edge support feature (a vertex twice) */
+static void segment_ends(const vrPosed *b, const vrSupportFeature *s, int *t, int *h)
+{
+    if (s->kind == VR_EDGE && s->index >= 0) *t = b->p->edge_v[s->index][0], *h = b->p->edge_v[s->index][1];
+    else if (s->kind == VR_EDGE) farthest_pair(b->p, &s->v, t, h);   /* a line of vertices */
+    else *t = *h = s->index;                                          /* a vertex */
+}
+
 /* end points of a vertex or edge support feature, world (a vertex twice) */
 void vrSupportFeature_Segment(const vrPosed *b, const vrSupportFeature *s, vec3 *p0, vec3 *p1)
 {
     int t, h;
-    if (s->kind == VR_EDGE && s->index >= 0) t = b->p->edge_v[s->index][0], h = b->p->edge_v[s->index][1];
-    else if (s->kind == VR_EDGE) farthest_pair(b->p, &s->v, &t, &h);   /* a line of vertices */
-    else t = h = s->index;                                              /* a vertex */
+    segment_ends(b, s, &t, &h);
     *p0 = vrPosed_Vertex(b, t);
     *p1 = vrPosed_Vertex(b, h);
 }
@@ -313,16 +322,66 @@ static int complete(const vrPosed *b, vrSupportFeature *s, vec3 q)
     return 1;
 }
 
-/* vertex and edge features: normal and distance, the features completed
- * (complete) until neither changes: at most twice, as edges stay edges */
+/* the distance from x to feature s's segment */
+static double to_segment(const vrPosed *b, const vrSupportFeature *s, vec3 x)
+{
+    vec3 p0, p1;
+    vrSupportFeature_Segment(b, s, &p0, &p1);
+    return vec3_dist(x, vec3_lerp(p0, p1, vrSegment_PointParam(p0, p1, x)));
+}
+
+/* an end of edge feature s of b more than COMPLETE_TOL nearer feature o
+ * of `other` than dist (the nearer end, the first on ties), or -1 */
+static int nearer_end(const vrPosed *b, const vrSupportFeature *s, const vrPosed *other, const vrSupportFeature *o,
+                      double *dist)
+{
+    int v[2], k, best = -1;
+    segment_ends(b, s, &v[0], &v[1]);
+    for (k = 0; k < 2; k++) {
+        double d = to_segment(other, o, vrPosed_Vertex(b, v[k]));
+        if (d < *dist - COMPLETE_TOL) *dist = d, best = v[k];
+    }
+    return best;
+}
+
+/* Two edges the segment formula takes as parallel are measured at the
+ * middle of their overlap; tilted a hair, one of them comes nearer the
+ * other at an end, and that end, not the middle, is the closest point
+ * (from a walk that ended on that vertex the distance was the brute
+ * force's, from one on the two edges 1.1 nm longer: other bits).  The
+ * nearer end of either edge becomes a vertex feature; 1 if one did. */
+static int reduce(const vrPosed *a, const vrPosed *b, vrCanon *c)
+{
+    double dist = c->dist;
+    int va = nearer_end(a, &c->sa, b, &c->sb, &dist), vb = nearer_end(b, &c->sb, a, &c->sa, &dist);
+    vrSupportFeature *s = vb >= 0 ? &c->sb : &c->sa;
+    if (va < 0 && vb < 0) return 0;
+    s->kind = VR_VERTEX;
+    s->index = vb >= 0 ? vb : va;
+    s->v.n = 0;
+    return vrIntSet_Add(&s->v, s->index) ? -1 : 1;
+}
+
+/* vertex and edge features: normal and distance, parallel edges reduced
+ * to a nearer end (reduce) and vertices completed (complete) until
+ * nothing changes, at most REFINE_MAX times (a fixed bound: the same
+ * features and poses end alike) */
+#define REFINE_MAX 4
 static int edges_and_vertices(const vrPosed *a, const vrPosed *b, vrCanon *c)
 {
-    int ca, cb;
-    for (;;) {
-        if (c->sa.kind != VR_EDGE || c->sb.kind != VR_EDGE || !edge_edge_normal(a, b, c)) point_features(a, b, c);
+    int ca, cb, k;
+    for (k = 0; k < REFINE_MAX; k++) {
+        int parallel = c->sa.kind == VR_EDGE && c->sb.kind == VR_EDGE && !edge_edge_normal(a, b, c);
+        if (c->sa.kind != VR_EDGE || c->sb.kind != VR_EDGE || parallel) point_features(a, b, c);
+        if (parallel && (ca = reduce(a, b, c)) != 0) {
+            if (ca < 0) return -1;
+            continue;
+        }
         if ((ca = complete(a, &c->sa, c->qb)) < 0 || (cb = complete(b, &c->sb, c->qa)) < 0) return -1;
         if (!ca && !cb) return 0;
     }
+    if (c->sa.kind != VR_EDGE || c->sb.kind != VR_EDGE || !edge_edge_normal(a, b, c)) point_features(a, b, c);
+    return 0;
 }
 
 /* Steps 2-4 of the rule: support features along dir (a) and -dir (b),
