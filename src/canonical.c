@@ -362,25 +362,34 @@ static int reduce(const vrPosed *a, const vrPosed *b, vrCanon *c)
     return vrIntSet_Add(&s->v, s->index) ? -1 : 1;
 }
 
-/* vertex and edge features: normal and distance, parallel edges reduced
- * to a nearer end (reduce) and vertices completed (complete) until
- * nothing changes, at most REFINE_MAX times (a fixed bound: the same
- * features and poses end alike) */
+/* normal and distance of vertex and edge features: two edges by their
+ * cross product, else by the segment formula; 1 when that took two edges
+ * as parallel */
+static int measure(const vrPosed *a, const vrPosed *b, vrCanon *c)
+{
+    int edges = c->sa.kind == VR_EDGE && c->sb.kind == VR_EDGE;
+    if (edges && edge_edge_normal(a, b, c)) return 0;
+    point_features(a, b, c);
+    return edges;
+}
+
+/* vertex and edge features: measured, parallel edges reduced to a nearer
+ * end (reduce) and vertices completed (complete) until nothing changes,
+ * at most REFINE_MAX times (a fixed bound: the same features and poses
+ * end alike) */
 #define REFINE_MAX 4
 static int edges_and_vertices(const vrPosed *a, const vrPosed *b, vrCanon *c)
 {
     int ca, cb, k;
     for (k = 0; k < REFINE_MAX; k++) {
-        int parallel = c->sa.kind == VR_EDGE && c->sb.kind == VR_EDGE && !edge_edge_normal(a, b, c);
-        if (c->sa.kind != VR_EDGE || c->sb.kind != VR_EDGE || parallel) point_features(a, b, c);
-        if (parallel && (ca = reduce(a, b, c)) != 0) {
+        if (measure(a, b, c) && (ca = reduce(a, b, c)) != 0) {
             if (ca < 0) return -1;
             continue;
         }
         if ((ca = complete(a, &c->sa, c->qb)) < 0 || (cb = complete(b, &c->sb, c->qa)) < 0) return -1;
         if (!ca && !cb) return 0;
     }
-    if (c->sa.kind != VR_EDGE || c->sb.kind != VR_EDGE || !edge_edge_normal(a, b, c)) point_features(a, b, c);
+    measure(a, b, c);
     return 0;
 }
 
