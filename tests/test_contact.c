@@ -524,26 +524,46 @@ static void side_by_side(vec3 ha, vrPose pa, vec3 hb, vrPose pb, double tol, int
     *unequal += u;
 }
 
-static int test_boxes_side_by_side_are_measured_right_from_every_start(void)
+/* a placement of two boxes: half sizes and poses */
+typedef struct Placement { vec3 ha, hb; vrPose pa, pb; } Placement;
+
+/* 300 placements made by place from their own random stream (seed as it
+ * was after): how many were measured more than 1 nm wrong from some
+ * start (*wrong), and how many gave other bits from some start (*unequal) */
+static void placed_300(unsigned long long stream, void (*place)(int k, Placement *pl), int *wrong, int *unequal)
 {
     unsigned long long kept = seed;
-    int k, wrong = 0, unequal = 0;
-    seed = 0x9E3779B97F4A7C15ull;
+    int k;
+    seed = stream;
+    *wrong = *unequal = 0;
     for (k = 0; k < 300; k++) {
-        double yaw = rnd(0, 2 * VR_PI), gap = pow(10, -rnd(3, 9)), dz = (k % 3) * pow(10, -rnd(9, 13));
-        double tilt = k % 4 == 3 ? pow(10, -rnd(8, 11)) : 0;
-        vec3 ha = vec3_make(rnd(0.05, 0.3), rnd(0.05, 0.3), rnd(0.05, 0.3));
-        vec3 hb = vec3_make(rnd(0.05, 0.3), rnd(0.05, 0.3), rnd(0.05, 0.3));
-        quat q = quat_from_axis_angle(vec3_make(0, 0, 1), yaw), flip = quat_from_axis_angle(vec3_make(1, 0, 0), VR_PI);
-        quat qa = k % 2 ? quat_mul(q, flip) : q, qb = quat_mul(q, quat_from_axis_angle(vec3_make(0, 1, 0), tilt));
-        vec3 side = quat_rotate(q, vec3_make(1, 0, 0));
-        vrPose pa = vrPose_make(vec3_make(0.3, -0.7, ha.z), qa);
-        vrPose pb = vrPose_make(vec3_add(vec3_scale(side, ha.x + hb.x + gap), vec3_make(0.3, -0.7, hb.z + dz)), qb);
-        side_by_side(ha, pa, hb, pb, 1e-9, &wrong, &unequal);
+        Placement pl;
+        place(k, &pl);
+        side_by_side(pl.ha, pl.pa, pl.hb, pl.pb, 1e-9, wrong, unequal);
     }
     seed = kept;
-    printf("    300 placements: %d measured wrong from some start, %d not the same bits from every start\n", wrong,
-           unequal);
+    printf("    300 placements: %d measured wrong by over 1 nm from some start, %d not the same bits from every start\n",
+           *wrong, *unequal);
+}
+
+static void side_by_side_placement(int k, Placement *pl)
+{
+    double yaw = rnd(0, 2 * VR_PI), gap = pow(10, -rnd(3, 9)), dz = (k % 3) * pow(10, -rnd(9, 13));
+    double tilt = k % 4 == 3 ? pow(10, -rnd(8, 11)) : 0;
+    vec3 ha = vec3_make(rnd(0.05, 0.3), rnd(0.05, 0.3), rnd(0.05, 0.3));
+    vec3 hb = vec3_make(rnd(0.05, 0.3), rnd(0.05, 0.3), rnd(0.05, 0.3));
+    quat q = quat_from_axis_angle(vec3_make(0, 0, 1), yaw), flip = quat_from_axis_angle(vec3_make(1, 0, 0), VR_PI);
+    quat qa = k % 2 ? quat_mul(q, flip) : q, qb = quat_mul(q, quat_from_axis_angle(vec3_make(0, 1, 0), tilt));
+    vec3 side = quat_rotate(q, vec3_make(1, 0, 0));
+    pl->ha = ha, pl->hb = hb;
+    pl->pa = vrPose_make(vec3_make(0.3, -0.7, ha.z), qa);
+    pl->pb = vrPose_make(vec3_add(vec3_scale(side, ha.x + hb.x + gap), vec3_make(0.3, -0.7, hb.z + dz)), qb);
+}
+
+static int test_boxes_side_by_side_are_measured_right_from_every_start(void)
+{
+    int wrong, unequal;
+    placed_300(0x9E3779B97F4A7C15ull, side_by_side_placement, &wrong, &unequal);
     ENSURE(wrong == 0 && unequal == 0);
     return 0;
 }
@@ -557,27 +577,25 @@ static int test_boxes_side_by_side_are_measured_right_from_every_start(void)
  * measured 2.8 to 13 cm apart for 2.5 to 9.8 nm (the physics fuzzer's
  * seed 10473: 9 cm for 1.9); before near-parallel edges were reduced to
  * their nearer end, one was 1.7 nm long (the middle of the overlap). */
+static void corner_to_corner_placement(int k, Placement *pl)
+{
+    vec3 ha = vec3_make(rnd(0.03, 0.15), rnd(0.03, 0.15), rnd(0.03, 0.15));
+    vec3 hb = vec3_make(rnd(0.03, 0.15), rnd(0.03, 0.15), rnd(0.03, 0.15));
+    double gap = pow(10, -rnd(3, 9)), angle = rnd(0.1, 1.4), tilt = pow(10, -rnd(7, 11));
+    double dz = rnd(-1, 1) * (ha.z + hb.z);
+    quat qa = quat_from_axis_angle(rnd_unit(), tilt);
+    quat qb = quat_from_axis_angle(vec3_make(0, 0, 1), (k % 4) * VR_PI / 2);
+    vec3 hbt = k % 2 ? vec3_make(hb.y, hb.x, hb.z) : hb;   /* b's half sizes in the world after its turn */
+    pl->ha = ha, pl->hb = hb;
+    pl->pa = vrPose_make(vec3_make(0.2, -0.4, 0.5), qa);
+    pl->pb = vrPose_make(vec3_make(0.2 + ha.x + hbt.x + gap * cos(angle), -0.4 + ha.y + hbt.y + gap * sin(angle),
+                                   0.5 + dz), qb);
+}
+
 static int test_boxes_corner_to_corner_are_measured_right_from_every_start(void)
 {
-    unsigned long long kept = seed;
-    int k, wrong = 0, unequal = 0;
-    seed = 0xD1B54A32D192ED03ull;
-    for (k = 0; k < 300; k++) {
-        vec3 ha = vec3_make(rnd(0.03, 0.15), rnd(0.03, 0.15), rnd(0.03, 0.15));
-        vec3 hb = vec3_make(rnd(0.03, 0.15), rnd(0.03, 0.15), rnd(0.03, 0.15));
-        double gap = pow(10, -rnd(3, 9)), angle = rnd(0.1, 1.4), tilt = pow(10, -rnd(7, 11));
-        double dz = rnd(-1, 1) * (ha.z + hb.z);
-        quat qa = quat_from_axis_angle(rnd_unit(), tilt);
-        quat qb = quat_from_axis_angle(vec3_make(0, 0, 1), (k % 4) * VR_PI / 2);
-        vec3 hbt = k % 2 ? vec3_make(hb.y, hb.x, hb.z) : hb;   /* b's half sizes in the world after its turn */
-        vrPose pa = vrPose_make(vec3_make(0.2, -0.4, 0.5), qa);
-        vrPose pb = vrPose_make(vec3_make(0.2 + ha.x + hbt.x + gap * cos(angle), -0.4 + ha.y + hbt.y + gap * sin(angle),
-                                          0.5 + dz), qb);
-        side_by_side(ha, pa, hb, pb, 1e-9, &wrong, &unequal);
-    }
-    seed = kept;
-    printf("    300 placements: %d measured wrong by over 1 nm from some start, %d not the same bits from every start\n", wrong,
-           unequal);
+    int wrong, unequal;
+    placed_300(0xD1B54A32D192ED03ull, corner_to_corner_placement, &wrong, &unequal);
     ENSURE(wrong == 0 && unequal == 0);
     return 0;
 }
