@@ -125,7 +125,7 @@ static int evaluate(vrOwner *o, int pi, double t, double t_prev, vrEvent *ev)
         if (vrPair_Touch(o, ev, p, at)) return 1; /* due again at once, as after an impact */
     }
     if (vrPair_InsideEvents(o, ev, t, p, &pa, &pb, &c)) return 1;
-    if (o->p.use_heap) p->quiet_until = vrPair_QuietHorizon(o, p, t, &pa, &pb, &c);
+    if (o->p.use_heap) p->quiet_until = vrPair_QuietHorizon(o, p, t, &c);
     return 0;
 }
 

@@ -204,8 +204,7 @@ double vrPair_SphereGap(const vrOwner *o, const vrPair *p, double t, vec3 *dir);
 int vrOwner_PutOffKey(vrOwner *o, int pi, double dist, vec3 n);
 
 /* quiet.c: how far ahead the pair is proved quiet (-INFINITY: not) */
-double vrPair_QuietHorizon(vrOwner *o, const vrPair *p, double t, const vrPose *pa, const vrPose *pb,
-                           const vrContact *c);
+double vrPair_QuietHorizon(vrOwner *o, const vrPair *p, double t, const vrContact *c);
 /* a pair in the envelope, not touching: quiet until it may touch or leave */
 double vrPair_ApproachHorizon(vrOwner *o, const vrPair *p, double t, const vrPose *pa, const vrPose *pb,
                               const vrContact *c);

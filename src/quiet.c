@@ -70,19 +70,11 @@ static int quiet_slide(vrOwner *o, const vrPair *p, double t, double until, cons
  * the rounding of positions (1e-13 m a minute into a run) */
 #define STAY_MARGIN 1e-9
 
-static int quiet_to(vrOwner *o, const vrPair *p, double t, double until, const vrPose *pa, const vrPose *pb,
-                    const vrContact *c)
-{
-    (void)pa, (void)pb;
-    return quiet_slide(o, p, t, until, c);
-}
-
-double vrPair_QuietHorizon(vrOwner *o, const vrPair *p, double t, const vrPose *pa, const vrPose *pb,
-                            const vrContact *c)
+double vrPair_QuietHorizon(vrOwner *o, const vrPair *p, double t, const vrContact *c)
 {
     double T = o->bp.T;
-    if (!quiet_to(o, p, t, T, pa, pb, c)) return -INFINITY;
-    return quiet_to(o, p, t, T + QUIET_AHEAD, pa, pb, c) ? T + QUIET_AHEAD : T;
+    if (!quiet_slide(o, p, t, T, c)) return -INFINITY;
+    return quiet_slide(o, p, t, T + QUIET_AHEAD, c) ? T + QUIET_AHEAD : T;
 }
 
 /* the first tau with dist + s tau + acc tau^2 / 2 = level (dist < level) */
