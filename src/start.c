@@ -1,6 +1,7 @@
 /* start.c — vrWorld_Start: the world made ready for a frame.
  *
  *   apply_params     changed settings reach the owners; bodies re-anchored
+ *   build_all, ready_all   every object built (each failure named), then placed
  *   report_overlaps  SPEC 1.4: added or moved objects must not interpenetrate
  */
 #include <stdlib.h>
@@ -13,6 +14,7 @@
 #include "start.h"
 
 #define MAX_REPORTED_OVERLAPS 8
+#define MAX_REPORTED_BUILDS 8
 
 int vrWorld_ListDynamic(vrWorld *w)
 {
@@ -116,15 +118,40 @@ static int report_overlaps(vrWorld *w, char *err, size_t n)
     return -1;
 }
 
-/* builds what changed and places the objects not yet in the simulation */
+/* builds what changed, naming every object that cannot be built (two
+ * polyhedra without a file: both, not one a try); -1 when any failed */
+static int build_all(vrWorld *w, char *err, size_t n)
+{
+    int i, failed = 0;
+    char why[512];
+    size_t len;
+    for (i = 0; i < w->table.n; i++) {
+        vrObject *o = w->table.obj[i];
+        if (!o || o->built || vrObject_Build(o, why, sizeof why) == 0) continue;
+        if (++failed > MAX_REPORTED_BUILDS || !err || !n) continue;
+        len = failed == 1 ? 0 : strlen(err);
+        snprintf(err + len, n - len, "%sobject '%s': %s", failed == 1 ? "" : "; ", o->name, why);
+    }
+    if (failed > MAX_REPORTED_BUILDS && err && n) {
+        len = strlen(err);
+        snprintf(err + len, n - len, "; and %d more objects", failed - MAX_REPORTED_BUILDS);
+    }
+    return failed ? -1 : 0;
+}
+
+/* builds what changed and places the objects not yet in the simulation:
+ * none is placed until every one is built, so a start that fails places
+ * nothing (and counts no clamp of a placement twice when it is tried
+ * again) */
 static int ready_all(vrWorld *w, char *err, size_t n)
 {
     vrFlight f = vrSettings_Flight(&w->s);
     int i;
     char why[512];
+    if (build_all(w, err, n) != 0) return -1;
     for (i = 0; i < w->table.n; i++)
         if (w->table.obj[i] && vrObject_Ready(w->table.obj[i], w->t, &f, &w->clamps, why, sizeof why) != 0)
-            return vrGeom_Fail(err, n, "object '%s': %s", w->table.obj[i]->name, why);   /* which one failed */
+            return vrGeom_Fail(err, n, "object '%s': %s", w->table.obj[i]->name, why);
     return 0;
 }
 
