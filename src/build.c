@@ -108,8 +108,9 @@ int vrObject_Place(vrObject *o, double t, const vrFlight *f)
     clamps = vrBody_Anchor(&o->body, t, vrVec3_Of(o->def.translate), vrVec3_Of(o->def.linear_vel), q,
                            vrBody_MomentumAt(&o->body, q, vrVec3_Of(o->def.angular_vel)), f);
     o->have_frame_pose = o->frame_pose_lazy = 0;
-    if (o->saved) vrSaved_Place(o, f);   /* SPEC 11: a saved run goes on where it was */
-    return clamps;
+    if (!o->saved) return clamps;
+    vrSaved_Place(o, f);   /* SPEC 11: a saved run goes on where it was */
+    return 0;              /* its definition's speeds were cut, and counted, when it was placed first */
 }
 
 int vrObject_Ready(vrObject *o, double t, const vrFlight *f, long long *clamps, char *err, size_t n)

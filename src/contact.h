@@ -79,9 +79,8 @@ int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const 
  * times the largest difference from vrContact_Distance the tests find on
  * random poses (6e-15 m, objects up to 20 m from the origin; they fail
  * above 1e-13).  Faces within 1e-9 of parallel to a long edge differ more
- * (VR_QUICK_CLEAR below); vrContact_Within may then answer by the walk
- * where the canonical distance would not, the same with the heap and
- * without, so runs keep their bits. */
+ * (VR_QUICK_CLEAR below), so vrContact_Within trusts a walk above d only
+ * that far above it. */
 /* Shapes into each other no deeper than this (m) are taken as touching
  * along the face normal they overlap least along, with their whole
  * contact region, not libccd's one point (contact.c): bodies resting on
@@ -107,7 +106,8 @@ int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const 
 #define VR_AT_LEVEL 5e-13
 
 /* Is the distance <= d?  The walk's own distance decides when it is more
- * than VR_QUICK_TOL from d (the canonical answer is then the same), else
+ * than VR_QUICK_TOL below d or VR_QUICK_CLEAR above it (the canonical
+ * answer is then the same, whatever the walk's start), else
  * vrContact_Distance's, finished from the same walk: the bisection's test
  * (SPEC 3.2), one walk a call.  2 when the canonical distance is at d (no
  * more than VR_AT_LEVEL below it).  seen (may be NULL) gets what was measured:
