@@ -147,11 +147,9 @@ static int ready_all(vrWorld *w, char *err, size_t n)
 {
     vrFlight f = vrSettings_Flight(&w->s);
     int i;
-    char why[512];
     if (build_all(w, err, n) != 0) return -1;
     for (i = 0; i < w->table.n; i++)
-        if (w->table.obj[i] && vrObject_Ready(w->table.obj[i], w->t, &f, &w->clamps, why, sizeof why) != 0)
-            return vrGeom_Fail(err, n, "object '%s': %s", w->table.obj[i]->name, why);
+        if (w->table.obj[i] && !w->table.obj[i]->live) w->clamps += vrObject_Place(w->table.obj[i], w->t, &f);
     return 0;
 }
 
