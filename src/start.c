@@ -4,6 +4,7 @@
  *   build_all, ready_all   every object built (each failure named), then placed
  *   report_overlaps  SPEC 1.4: added or moved objects must not interpenetrate
  */
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include "grow.h"
@@ -80,6 +81,16 @@ static int apply_params(vrWorld *w)
     return vrWorld_ApplyUpdate(w, &w->update);
 }
 
+/* a list message grown in place: fmt appended to what err holds */
+static void append(char *err, size_t n, const char *fmt, ...)
+{
+    size_t len = strlen(err);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err + len, n - len, fmt, ap);
+    va_end(ap);
+}
+
 /* SPEC 1.4: the pairs of the bodies added or moved since the last start
  * that checked (every body at the first start; none owed: nothing to ask);
  * the other pairs were looked after by the run.  Serial and workers check
@@ -88,7 +99,6 @@ static int report_overlaps(vrWorld *w, char *err, size_t n)
 {
     int pairs[MAX_REPORTED_OVERLAPS][2], k, i, nids = 0;
     int *ids;
-    size_t len;
     for (i = 0; i < w->table.n; i++)
         if (w->table.obj[i] && w->table.obj[i]->overlap_owed) break;
     if (i == w->table.n) return 0;
@@ -106,15 +116,9 @@ static int report_overlaps(vrWorld *w, char *err, size_t n)
     }
     if (!err || !n) return -1;
     snprintf(err, n, "objects interpenetrate, not starting:");
-    for (i = 0; i < k && i < MAX_REPORTED_OVERLAPS; i++) {
-        len = strlen(err);
-        snprintf(err + len, n - len, "%s %s and %s", i ? ";" : "", w->table.obj[pairs[i][0]]->name,
-                 w->table.obj[pairs[i][1]]->name);
-    }
-    if (k > MAX_REPORTED_OVERLAPS) {
-        len = strlen(err);
-        snprintf(err + len, n - len, "; and %d more pairs", k - MAX_REPORTED_OVERLAPS);
-    }
+    for (i = 0; i < k && i < MAX_REPORTED_OVERLAPS; i++)
+        append(err, n, "%s %s and %s", i ? ";" : "", w->table.obj[pairs[i][0]]->name, w->table.obj[pairs[i][1]]->name);
+    if (k > MAX_REPORTED_OVERLAPS) append(err, n, "; and %d more pairs", k - MAX_REPORTED_OVERLAPS);
     return -1;
 }
 
@@ -124,18 +128,14 @@ static int build_all(vrWorld *w, char *err, size_t n)
 {
     int i, failed = 0;
     char why[512];
-    size_t len;
     for (i = 0; i < w->table.n; i++) {
         vrObject *o = w->table.obj[i];
         if (!o || o->built || vrObject_Build(o, why, sizeof why) == 0) continue;
         if (++failed > MAX_REPORTED_BUILDS || !err || !n) continue;
-        len = failed == 1 ? 0 : strlen(err);
-        snprintf(err + len, n - len, "%sobject '%s': %s", failed == 1 ? "" : "; ", o->name, why);
+        if (failed == 1) err[0] = '\0';
+        append(err, n, "%sobject '%s': %s", failed == 1 ? "" : "; ", o->name, why);
     }
-    if (failed > MAX_REPORTED_BUILDS && err && n) {
-        len = strlen(err);
-        snprintf(err + len, n - len, "; and %d more objects", failed - MAX_REPORTED_BUILDS);
-    }
+    if (failed > MAX_REPORTED_BUILDS && err && n) append(err, n, "; and %d more objects", failed - MAX_REPORTED_BUILDS);
     return failed ? -1 : 0;
 }
 
