@@ -11,7 +11,8 @@
  * classify it as a vertex, an edge or a face (vrSupportFeature_Find), and
  * compute distance, normal and closest points from those features and the
  * poses alone, by fixed formulas (vrCanon_Compute):
- *   a's face -> its normal;  else b's face -> minus its normal;
+ *   a's face -> its normal;  else b's face -> minus its normal (the
+ *     other feature measured where it lies over the face, overhang.c);
  *   edge x edge (not parallel) -> the cross product;
  *   otherwise the closest points of the two features, a vertex feature
  *   from which an edge goes nearer the other's closest point taken as
@@ -36,6 +37,7 @@
 #include <string.h>
 
 #include "canonical.h"
+#include "overhang.h"
 #include "polyhedron.h"
 #include "segment.h"
 
@@ -185,14 +187,6 @@ void vrCanon_Free(vrCanon *c)
     vrIntSet_Free(&c->sb.v);
 }
 
-/* world plane n.x = h of face f */
-vec3 vrPosed_FacePlane(const vrPosed *b, int f, double *h)
-{
-    vec3 n = vrPose_rotate(b->pose, b->p->face_normal[f]);
-    *h = b->p->face_offset[f] + vec3_dot(n, b->pose->p);
-    return n;
-}
-
 static double min_height(const vrPosed *b, const vrIntSet *s, vec3 n)
 {
     double m = HUGE_VAL;
@@ -212,14 +206,20 @@ static vec3 centroid(const vrPosed *b, const vrIntSet *s)
     return vec3_scale(c, 1.0 / s->n);
 }
 
-/* a face of `fb` (world plane n.x = h) against the support set of `other`:
- * distance from the lowest vertex, closest points from the set's centroid */
-static double face_against(const vrPosed *other, const vrIntSet *s, vec3 n, double h, vec3 *q_face, vec3 *q_other)
+/* face f of fb (world plane n.x = h) against the support feature s of
+ * `other`: the distance from its lowest vertex, the closest points from
+ * its centroid; from the part over the face where it reaches past the face
+ * (overhang.c) */
+static int face_against(const vrPosed *fb, int f, vec3 n, double h, const vrPosed *other, const vrSupportFeature *s,
+                        vec3 *q_face, vec3 *q_other, double *dist)
 {
-    double dist = min_height(other, s, n) - h;
-    *q_other = centroid(other, s);
+    double low;
+    int over = vrOverhang_Lowest(fb, f, n, other, s, &low, q_other);
+    if (over < 0) return -1;
+    if (!over) low = min_height(other, &s->v, n), *q_other = centroid(other, &s->v);
+    *dist = low - h;
     *q_face = vec3_madd(*q_other, -(vec3_dot(n, *q_other) - h), n);
-    return dist;
+    return 0;
 }
 
 /* the end vertices of a vertex or edge support feature (a vertex twice) */
@@ -400,12 +400,12 @@ int vrCanon_Compute(const vrPosed *a, const vrPosed *b, vec3 dir, vrFeature fa, 
     if (vrSupportFeature_Find(a, dir, fa, &c->sa) || vrSupportFeature_Find(b, vec3_neg(dir), fb, &c->sb)) return -1;
     if (c->sa.kind == VR_FACE) {
         c->n = vrPosed_FacePlane(a, c->sa.index, &c->ha);
-        c->dist = face_against(b, &c->sb.v, c->n, c->ha, &c->qa, &c->qb);
+        if (face_against(a, c->sa.index, c->n, c->ha, b, &c->sb, &c->qa, &c->qb, &c->dist)) return -1;
         c->hb = c->ha + c->dist;
     } else if (c->sb.kind == VR_FACE) {
         double hf;
         vec3 nb = vrPosed_FacePlane(b, c->sb.index, &hf);
-        c->dist = face_against(a, &c->sa.v, nb, hf, &c->qb, &c->qa);
+        if (face_against(b, c->sb.index, nb, hf, a, &c->sa, &c->qb, &c->qa, &c->dist)) return -1;
         c->n = vec3_neg(nb);
         c->hb = -hf;
         c->ha = c->hb - c->dist;

@@ -13,7 +13,12 @@ typedef struct vrPosed { const vrPolyhedron *p; const vrPose *pose; } vrPosed;
 
 static inline vec3 vrPosed_Vertex(const vrPosed *b, int i) { return vrPose_apply(b->pose, b->p->vert[i]); }
 /* the world plane n.x = *h of face f; returns n */
-vec3 vrPosed_FacePlane(const vrPosed *b, int f, double *h);
+static inline vec3 vrPosed_FacePlane(const vrPosed *b, int f, double *h)
+{
+    vec3 n = vrPose_rotate(b->pose, b->p->face_normal[f]);
+    *h = b->p->face_offset[f] + vec3_dot(n, b->pose->p);
+    return n;
+}
 
 /* a support feature (Mirtich's features) and its vertices */
 typedef struct vrSupportFeature {

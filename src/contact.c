@@ -379,18 +379,28 @@ static int at_level(double dist, double d)
     return dist > d ? 0 : dist >= d - VR_AT_LEVEL ? 2 : 1;
 }
 
+/* How far above a level the walk's distance must be to answer alone:
+ * VR_QUICK_TOL and the walk's own slack.  The walk stops within its region
+ * tolerance (VR_REGION_TOL times the pair's size, closest.c) of the
+ * closest features; where a face lies a hair off parallel to an edge that
+ * is a place metres along the edge, a little above the true distance,
+ * which the canonical distance measures (the edit fuzzer's seed 6785: a
+ * prism's bottom face tilted 4e-12 rad over a floor's edge, the walk
+ * 1.009e-11 or 0.974e-11 m above the level by its start, 3.4e-13 apart,
+ * at a size of 4 m).  Below a level VR_QUICK_TOL is enough: the canonical
+ * distance is never above the walk's by more than a rounding. */
+static double above_walk_slack(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb)
+{
+    double size = a->r_out + b->r_out + vec3_len(vec3_sub(pb->p, pa->p));
+    return VR_QUICK_TOL + 2 * VR_REGION_TOL * (size > 1 ? size : 1);
+}
+
 /* One walk: its own distance when that is clear of d, else the canonical
  * distance finished from the same walk (a second walk from where the first
  * ended would only confirm it).  Clear below d by VR_QUICK_TOL, above it
- * by VR_QUICK_CLEAR: the canonical distance is never above the walk's but
- * may lie that far below it (a face a hair off parallel to a long edge,
- * measured at the edge's ends), and the walk's own distance may differ by
- * its start where two places tie within its tolerance, so a walk a little
- * above d + VR_QUICK_TOL from one start and a little below it from
- * another gave two answers (the edit fuzzer's seed 6785: a prism's bottom
- * face, tilted 4e-12 rad, sliding over a floor's edge, the walk 1.009e-11
- * or 0.974e-11 m above the level and the canonical 1.07e-11 m below it;
- * a run read from a save parted from the one that saved). */
+ * by above_walk_slack: otherwise a walk a little above d from one start
+ * and a little below from another gave two answers (seed 6785, whose run
+ * read from a save parted from the one that saved). */
 int vrContact_Within(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
                      vrWalkCache *cache, double d, vrContact *seen)
 {
@@ -408,7 +418,8 @@ int vrContact_Within(const vrShape *a, const vrPose *pa, const vrShape *b, const
     seen->dist = pen ? fmin(dw, 0.0) : dw;
     seen->pa = ca;
     seen->pb = cb;
-    if (!pen && dw > 0 && (dw < d - VR_QUICK_TOL || dw > d + VR_QUICK_CLEAR)) return dw < d;
+    if (!pen && dw > 0 && (dw < d - VR_QUICK_TOL || dw > d + above_walk_slack(a->poly, pa, b->poly, pb)))
+        return dw < d;
     /* Touching or overlapping by the walk, asked about a level above any
      * touch: whatever poly_finish would find (a touch within SHALLOW_TOL,
      * libccd's overlap, a walk from a fixed start a rounding apart) is at

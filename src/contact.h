@@ -75,28 +75,32 @@ int vrContact_Region(const vrShape *a, const vrPose *pa, const vrShape *b, const
  * touch: use vrContact_Distance then. */
 int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const vrPose *pb,
                     vrWalkCache *cache, double *dist, vec3 *n);
-/* How far from a threshold the walk's distance may decide: over a thousand
- * times the largest difference from vrContact_Distance the tests find on
- * random poses (6e-15 m, objects up to 20 m from the origin; they fail
- * above 1e-13).  Faces within 1e-9 of parallel to a long edge differ more
- * (VR_QUICK_CLEAR below), so vrContact_Within trusts a walk above d only
- * that far above it. */
+
 /* Shapes into each other no deeper than this (m) are taken as touching
  * along the face normal they overlap least along, with their whole
  * contact region, not libccd's one point (contact.c): bodies resting on
  * each other may sink this far (SPEC 7). */
 #define VR_SHALLOW_OVERLAP 1e-4
 
+/* How far from a threshold the walk's distance may decide: over a thousand
+ * times the largest difference from vrContact_Distance the tests find on
+ * random poses (6e-15 m, objects up to 20 m from the origin; they fail
+ * above 1e-13).  Above a threshold the walk's own slack is added
+ * (contact.c above_walk_slack): near a face a hair off parallel to an
+ * edge, where it stops depends on its start. */
 #define VR_QUICK_TOL 1e-11
 
-/* How far below the walk's distance the canonical one can be.  For a
- * face, the canonical distance is the other feature's lowest vertex over
- * the face's plane; a face within SUPPORT_TOL (1e-9 m) of parallel to a
- * long edge is measured at the edge's ends, which may lie metres beyond
- * the face: a table's 6 m edge under a tilted 9 cm box face gave 8e-11 m
- * less than the true distance the walk finds, and a 6 mm facet against a
- * 6 m edge could give 1e-6 m.  A look that only wants to know that a pair
- * is clear of the envelope trusts the walk this far from it. */
+/* How far below the walk's distance a look that only wants to know that a
+ * pair is clear of the envelope (cheap_look.c, quiet.c, the look-ahead's
+ * may_cross) takes the canonical one to be.  It was the canonical rule's
+ * error where a face lies within 1e-9 m of parallel to a long edge or a
+ * larger face, measured at that feature's far ends (a table's 6 m edge
+ * under a tilted 9 cm box face: 8e-11 m; a 6 mm facet against a 6 m edge
+ * could give 1e-6 m).  Now that only the part under the face is measured
+ * (overhang.c), the two differ by the walk's slack (1e-12 m per metre of
+ * the pair's size); the margin stays this wide because it costs nothing
+ * measurable (1e-9 m instead: 0.1 % fewer instructions in the peers'
+ * rooms, the same bits). */
 #define VR_QUICK_CLEAR 1e-5
 
 /* A canonical distance this little below a level is at the level: the
@@ -106,8 +110,8 @@ int vrContact_Quick(const vrShape *a, const vrPose *pa, const vrShape *b, const 
 #define VR_AT_LEVEL 5e-13
 
 /* Is the distance <= d?  The walk's own distance decides when it is more
- * than VR_QUICK_TOL below d or VR_QUICK_CLEAR above it (the canonical
- * answer is then the same, whatever the walk's start), else
+ * than VR_QUICK_TOL below d or VR_QUICK_TOL and its slack above it (the
+ * canonical answer is then the same, whatever the walk's start), else
  * vrContact_Distance's, finished from the same walk: the bisection's test
  * (SPEC 3.2), one walk a call.  2 when the canonical distance is at d (no
  * more than VR_AT_LEVEL below it).  seen (may be NULL) gets what was measured:

@@ -225,8 +225,8 @@ static void collect_due(vrOwner *o, double t)
 /* may inside pair pi have an event before t: a touching one that may
  * overlap at t (so that it may touch before t), one in the envelope that
  * may be within g_c at t (an impact before t)?  The walk decides: the
- * canonical distance may lie up to 1e-6 m below it (contact.h), so a walk
- * within VR_QUICK_CLEAR of the level says maybe. */
+ * canonical distance may lie a little below it (its slack, contact.h), so
+ * a walk within VR_QUICK_CLEAR of the level says maybe. */
 static int may_cross(vrOwner *o, int pi, double t)
 {
     double level = o->pair[pi].near ? 0 : o->gc;
