@@ -311,6 +311,52 @@ static int test_a_larger_face_is_measured_under_the_face(void)
     return 0;
 }
 
+/* Cubes of random sizes and turns about the vertical lying a millimetre
+ * over a 6 m slab turned up to 1.5e-10 rad about a random level axis
+ * (its top face still the support, its corners within 1e-9 m), many of
+ * them hanging over the slab's edge or corner, in either order: the
+ * canonical distance is brute force's to 1e-13 m, whichever face
+ * measures the other.  Before overhang.c the slab's far corners were
+ * measured (up to 4.5e-10 m off here). */
+static int test_faces_a_hair_off_parallel_are_measured_over_each_other(void)
+{
+    Fix slab;
+    int k, clipped = 0;
+    double worst = 0;
+    ENSURE(box(&slab, 3, 3, 0.1) == 0);
+    for (k = 0; k < 400; k++) {
+        Fix cube;
+        double h = rnd(0.05, 0.4), a = rnd(0, 2 * VR_PI), tilt = rnd(-1.5e-10, 1.5e-10), want, got;
+        vec3 axis = vec3_make(cos(a), sin(a), 0);
+        vrPose ps = vrPose_make(vec3_make(0, 0, -0.1), quat_from_axis_angle(axis, tilt)), pc;
+        vec3 at = vec3_make(rnd(-3.1, 3.1), rnd(-3.1, 3.1), 0);
+        vrContact c;
+        int swap = k % 2;
+        ENSURE(box(&cube, h, h, h) == 0);
+        at.z = h + 1e-3;   /* a millimetre over the slab's top (the tilt moves it by < 5e-10 m) */
+        pc = vrPose_make(at, quat_from_axis_angle(vec3_make(0, 0, 1), rnd(0, 2 * VR_PI)));
+        want = vrClosest_BruteForce(swap ? slab.s.poly : cube.s.poly, swap ? &ps : &pc, swap ? cube.s.poly : slab.s.poly,
+                                    swap ? &pc : &ps);
+        ENSURE(vrContact_Distance(swap ? &slab.s : &cube.s, swap ? &ps : &pc, swap ? &cube.s : &slab.s,
+                                  swap ? &pc : &ps, NULL, &c) == 0);
+        got = c.dist;
+        if (want > 0 && want < 2e-3) clipped += fabs(at.x) + h > 3 || fabs(at.y) + h > 3;
+        if (!(fabs(got - want) <= 1e-13)) {
+            printf("    cube %d (half %.3f at %.3f %.3f, tilt %.3g): canonical %.17g, brute force %.17g\n", k, h,
+                   at.x, at.y, tilt, got, want);
+            unfix(&cube);
+            unfix(&slab);
+            return 1;
+        }
+        worst = fmax(worst, fabs(got - want));
+        unfix(&cube);
+    }
+    printf("    400 cubes, %d over the slab's edge: largest difference %.3g m\n", clipped, worst);
+    ENSURE(clipped > 20);
+    unfix(&slab);
+    return 0;
+}
+
 /* A boxy superquadric (exp2 0.33) has meridians along which three
  * vertices lie in a line on a flat side.  Lying on such a line over a
  * plate's edge (the physics fuzzer's seed 2043, 1 mm apart), its support
@@ -1292,6 +1338,7 @@ static const vrTest tests[] = {
     TEST(test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance),
     TEST(test_walk_and_canonical_distance_under_a_long_edge),
     TEST(test_a_larger_face_is_measured_under_the_face),
+    TEST(test_faces_a_hair_off_parallel_are_measured_over_each_other),
     TEST(test_a_line_of_support_vertices_is_measured_as_a_segment),
     TEST(test_a_hair_tilted_edge_beside_an_edge_is_measured_as_an_edge),
     TEST(test_touching_tilted_boxes_distance_is_brute_force),
