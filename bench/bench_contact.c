@@ -33,7 +33,7 @@
 #include "shell_run.h"
 
 #define RUNS 3
-#define MAX_STATS 8
+#define MAX_STATS 11
 #define MAX_BODIES 160
 #define PILE_SLOW_MS 30000.0   /* a pile run slower than this runs only once */
 
@@ -553,7 +553,7 @@ static void pile(void)
 }
 
 /* ---- 4b. landing: a pile of 300 ------------------------------------------------- */
-#define LANDING_SEGS 7          /* 7 s in 100-frame segments (MAX_STATS stats lines) */
+#define LANDING_SEGS 10         /* 10 s in 100-frame segments (MAX_STATS stats lines) */
 
 static char *landing_script(int seed) { return random_room_script(seed, 5, 300, LANDING_SEGS, 100); }
 
@@ -564,7 +564,7 @@ static char *landing_script(int seed) { return random_room_script(seed, 5, 300, 
 static void landing(void)
 {
     int seed;
-    header("4b. Landing: room = 5, random 300 (mu 0.5, e 0.5), 0.01 s frames, until all rest (7 s at most)");
+    header("4b. Landing: room = 5, random 300 (mu 0.5, e 0.5), 0.01 s frames, until all rest (10 s at most)");
     for (seed = 1; seed <= 3; seed++) {
         char *text = landing_script(seed), key[32], label[64];
         static Timed t;
