@@ -387,8 +387,10 @@ static int at_level(double dist, double d)
  * which the canonical distance measures (the edit fuzzer's seed 6785: a
  * prism's bottom face tilted 4e-12 rad over a floor's edge, the walk
  * 1.009e-11 or 0.974e-11 m above the level by its start, 3.4e-13 apart,
- * at a size of 4 m).  Below a level VR_QUICK_TOL is enough: the canonical
- * distance is never above the walk's by more than a rounding. */
+ * at a size of 4 m).  Below a level VR_QUICK_TOL is enough: the walk's
+ * distance is between points of the bodies, never below the true one, and
+ * the canonical distance lies above the true one by at most 1e-12 m
+ * (canonical.c's COMPLETE_TOL). */
 static double above_walk_slack(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb)
 {
     double size = a->r_out + b->r_out + vec3_len(vec3_sub(pb->p, pa->p));
