@@ -282,6 +282,39 @@ static int test_walk_and_canonical_distance_under_a_long_edge(void)
     return 0;
 }
 
+/* vrContact_Within near a level, in that pose: the answer is the
+ * canonical distance's (at or below the level, or above it) from every
+ * start of the walk, at levels from 30e-12 m below the distance to 30e-12
+ * m above it (seed 6785: a walk a hair above d + 1e-11 answered "above"
+ * while the canonical distance lay below d; it parted a saved run from
+ * its reader). */
+static int test_within_a_level_answers_as_the_canonical_distance(void)
+{
+    Fix floor, box_;
+    vrPose pf, pb;
+    vrContact c;
+    int k, s, wrong = 0, asked = 0;
+    ENSURE(box(&floor, 3, 3, 0.1) == 0 && box(&box_, 0.0436547, 0.0926111, 0.0936551) == 0);
+    pf = identity_at(0, 0, -0.1);
+    pb = vrPose_make(vec3_make(2.38880385, 2.9394999, 0.11159634646910951),
+                     quat_normalize(quat_make(0.7445025140004801, 0.667619657175375, -4.4678705179990175e-12,
+                                              6.130485008526421e-12)));
+    ENSURE(vrContact_Distance(&floor.s, &pf, &box_.s, &pb, NULL, &c) == 0);
+    for (k = -30; k <= 30; k++) {
+        double d = c.dist + k * 1e-12;
+        for (s = 0; s < 40; s++) {
+            vrWalkCache w = start_cache(&floor.s, &box_.s, s > 0);
+            int r = vrContact_Within(&floor.s, &pf, &box_.s, &pb, &w, d, NULL);
+            wrong += (r != 0) != (c.dist <= d);
+            asked++;
+        }
+    }
+    printf("    %d questions at 61 levels, %d answered otherwise than the canonical distance\n", asked, wrong);
+    unfix(&floor);
+    unfix(&box_);
+    return wrong != 0;
+}
+
 /* The same with two faces: a 10 cm cube near a 6 m slab's edge, the slab
  * turned 1e-10 rad about y (its top face is still the support along the
  * cube's bottom normal, its corners within 1e-9 m), the cube first so that
@@ -1337,6 +1370,7 @@ static const vrTest tests[] = {
     TEST(test_distance_is_brute_force_distance_and_independent_of_cache),
     TEST(test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance),
     TEST(test_walk_and_canonical_distance_under_a_long_edge),
+    TEST(test_within_a_level_answers_as_the_canonical_distance),
     TEST(test_a_larger_face_is_measured_under_the_face),
     TEST(test_faces_a_hair_off_parallel_are_measured_over_each_other),
     TEST(test_a_line_of_support_vertices_is_measured_as_a_segment),
