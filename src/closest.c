@@ -233,13 +233,11 @@ static mat33 relative_rotation(const mat33 *ra, const mat33 *rb)
 static void walk_init(vrWalk *w, const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb,
                       const vrWalkCache *cache)
 {
-    double scale;
     w->p[0] = a;
     w->p[1] = b;
     w->R = relative_rotation(&pa->R, &pb->R);
     w->t = mat33_tmulv(&pa->R, vec3_sub(pb->p, pa->p));
-    scale = a->r_out + b->r_out + vec3_maxabs(w->t); /* a size, no sqrt needed */
-    w->tol = VR_REGION_TOL * (scale > 1 ? scale : 1);
+    w->tol = vrClosest_Tolerance(a->r_out + b->r_out + vec3_maxabs(w->t)); /* a size, no sqrt needed */
     if (cache && cache->valid && vrFeature_Valid(a, cache->a) && vrFeature_Valid(b, cache->b)) {
         w->f[0] = cache->a;
         w->f[1] = cache->b;

@@ -44,6 +44,9 @@ double vrClosest_ExhaustivePoint(const vrPolyhedron *a, const vrPose *pa, vec3 p
  * tests, relative to the scale of the pair (m); a step's outcome; the
  * step cap past which the exhaustive search answers */
 #define VR_REGION_TOL 1e-12
+/* the walks' slack for a pair (or a body and a point) of this size: its
+ * outer radii and the offset between them, in metres */
+static inline double vrClosest_Tolerance(double size) { return VR_REGION_TOL * (size > 1 ? size : 1); }
 enum { VR_WALK_GO, VR_WALK_DONE };
 static inline int vrClosest_StepCap(const vrPolyhedron *p) { return 2 * (p->nv + p->ne + p->nf); }
 

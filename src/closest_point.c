@@ -59,7 +59,7 @@ static double point_query(const vrPolyhedron *a, const vrPose *pa, vec3 point, v
     vec3 x = vrPose_invapply(pa, point), c;
     vrFeature f = vrFeature_Make(VR_VERTEX, 0);
     int n = 0;
-    double scale = a->r_out + vec3_maxabs(x), tol = VR_REGION_TOL * (scale > 1 ? scale : 1);
+    double tol = vrClosest_Tolerance(a->r_out + vec3_maxabs(x));
     if (cache && cache->valid && vrFeature_Valid(a, cache->a)) f = cache->a;
     if (at_once) f = point_exhaustive(a, x);
     while (!at_once && point_step(a, &f, x, tol) == VR_WALK_GO)

@@ -381,7 +381,7 @@ static int at_level(double dist, double d)
 
 /* How far above a level the walk's distance must be to answer alone:
  * VR_QUICK_TOL and the walk's own slack.  The walk stops within its region
- * tolerance (VR_REGION_TOL times the pair's size, closest.c) of the
+ * tolerance (vrClosest_Tolerance of the pair's size) of the
  * closest features; where a face lies a hair off parallel to an edge that
  * is a place metres along the edge, a little above the true distance,
  * which the canonical distance measures (the edit fuzzer's seed 6785: a
@@ -393,8 +393,8 @@ static int at_level(double dist, double d)
  * (canonical.c's COMPLETE_TOL). */
 static double above_walk_slack(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb)
 {
-    double size = a->r_out + b->r_out + vec3_len(vec3_sub(pb->p, pa->p));
-    return VR_QUICK_TOL + 2 * VR_REGION_TOL * (size > 1 ? size : 1);
+    /* the offset's length bounds the walk's own (its largest coordinate in a's frame) */
+    return VR_QUICK_TOL + 2 * vrClosest_Tolerance(a->r_out + b->r_out + vec3_len(vec3_sub(pb->p, pa->p)));
 }
 
 /* One walk: its own distance when that is clear of d, else the canonical
