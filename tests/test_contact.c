@@ -244,6 +244,18 @@ static int test_quick_distance_is_canonical_within_a_hundredth_of_its_tolerance(
     return 0;
 }
 
+/* the pose of the two tests below: a box whose bottom face hangs over a
+ * floor's 6 m edge, a hair off parallel to it */
+static int long_edge_pose(Fix *floor, Fix *box_, vrPose *pf, vrPose *pb)
+{
+    if (box(floor, 3, 3, 0.1) != 0 || box(box_, 0.0436547, 0.0926111, 0.0936551) != 0) return -1;
+    *pf = identity_at(0, 0, -0.1);
+    *pb = vrPose_make(vec3_make(2.38880385, 2.9394999, 0.11159634646910951),
+                      quat_normalize(quat_make(0.7445025140004801, 0.667619657175375, -4.4678705179990175e-12,
+                                               6.130485008526421e-12)));
+    return 0;
+}
+
 /* A box tilted (by a turn about x) so that its bottom face hangs over a
  * floor's 6 m edge, within 1e-9 of parallel to it: the walk finds the true
  * distance (the edge to the face's plane where it passes under the face,
@@ -261,11 +273,7 @@ static int test_walk_and_canonical_distance_under_a_long_edge(void)
     double dq, worst = 0;
     vec3 nq;
     int k;
-    ENSURE(box(&floor, 3, 3, 0.1) == 0 && box(&box_, 0.0436547, 0.0926111, 0.0936551) == 0);
-    pf = identity_at(0, 0, -0.1);
-    pb = vrPose_make(vec3_make(2.38880385, 2.9394999, 0.11159634646910951),
-                     quat_normalize(quat_make(0.7445025140004801, 0.667619657175375, -4.4678705179990175e-12,
-                                              6.130485008526421e-12)));
+    ENSURE(long_edge_pose(&floor, &box_, &pf, &pb) == 0);
     for (k = 0; k < 200; k++) {
         vrWalkCache c1 = start_cache(&floor.s, &box_.s, k > 0), c2 = start_cache(&floor.s, &box_.s, k > 0);
         ENSURE(vrContact_Quick(&floor.s, &pf, &box_.s, &pb, &c1, &dq, &nq) == 0);
@@ -294,11 +302,7 @@ static int test_within_a_level_answers_as_the_canonical_distance(void)
     vrPose pf, pb;
     vrContact c;
     int k, s, wrong = 0, asked = 0;
-    ENSURE(box(&floor, 3, 3, 0.1) == 0 && box(&box_, 0.0436547, 0.0926111, 0.0936551) == 0);
-    pf = identity_at(0, 0, -0.1);
-    pb = vrPose_make(vec3_make(2.38880385, 2.9394999, 0.11159634646910951),
-                     quat_normalize(quat_make(0.7445025140004801, 0.667619657175375, -4.4678705179990175e-12,
-                                              6.130485008526421e-12)));
+    ENSURE(long_edge_pose(&floor, &box_, &pf, &pb) == 0);
     ENSURE(vrContact_Distance(&floor.s, &pf, &box_.s, &pb, NULL, &c) == 0);
     for (k = -30; k <= 30; k++) {
         double d = c.dist + k * 1e-12;
