@@ -295,14 +295,15 @@ static int separated(const vrWalk *w)
     return vec3_len2(n) > 0 && separation_along(w, n) >= want;
 }
 
-/* the walk, or with `at_once` the exhaustive search without walking */
+/* the walk, or with `at_once` the exhaustive search without walking (2:
+ * over every feature pair) */
 static double pair_query(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb,
                          vrWalkCache *cache, vec3 *ca, vec3 *cb, int *steps, int *penetrating_out, int at_once)
 {
     vrWalk w;
     int n = 0, r = GO;
     walk_init(&w, a, pa, b, pb, cache);
-    if (at_once) r = vrWalk_Exhaustive(&w);
+    if (at_once) r = at_once == 2 ? vrWalk_ExhaustiveAll(&w) : vrWalk_Exhaustive(&w);
     while (r == GO && (r = walk_step(&w)) == GO)
         if (++n >= 8 && n >= vrClosest_StepCap(a) + vrClosest_StepCap(b)) {
             r = vrWalk_Exhaustive(&w);
@@ -339,4 +340,10 @@ double vrClosest_Exhaustive(const vrPolyhedron *a, const vrPose *pa, const vrPol
                             vrWalkCache *cache, vec3 *ca, vec3 *cb, int *penetrating)
 {
     return pair_query(a, pa, b, pb, cache, ca, cb, NULL, penetrating, 1);
+}
+
+double vrClosest_ExhaustiveAll(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb,
+                               vrWalkCache *cache, vec3 *ca, vec3 *cb, int *penetrating)
+{
+    return pair_query(a, pa, b, pb, cache, ca, cb, NULL, penetrating, 2);
 }

@@ -34,10 +34,13 @@ double vrClosest_WalkPoint(const vrPolyhedron *a, const vrPose *pa, vec3 point,
                            vrWalkCache *cache, vec3 *ca, int *steps);
 
 /* What the walks do when they hit their step cap (counted in
- * cache->fallbacks): search every feature pair, O(E F); same results and
- * cache update.  Exposed so that tests can check this rarely taken path. */
+ * cache->fallbacks): search every feature pair that can matter, O(E F);
+ * same results and cache update.  Exposed so that tests can check this
+ * rarely taken path; ..._All searches every pair (the tests' reference). */
 double vrClosest_Exhaustive(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb,
                             vrWalkCache *cache, vec3 *ca, vec3 *cb, int *penetrating);
+double vrClosest_ExhaustiveAll(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb,
+                               vrWalkCache *cache, vec3 *ca, vec3 *cb, int *penetrating);
 double vrClosest_ExhaustivePoint(const vrPolyhedron *a, const vrPose *pa, vec3 point, vrWalkCache *cache, vec3 *ca);
 
 /* for the walks (closest.c, closest_point.c): a plane's slack in region

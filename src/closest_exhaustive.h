@@ -6,8 +6,11 @@
 
 #include "closest_walk.h"
 
-/* the walk w ended by search, O(E F): VR_WALK_DONE with w->c the closest
- * points, or VR_WALK_PENETRATING with w->pen_point; w->f the features */
+/* the walk w ended by search, O(E F) over the features that can matter:
+ * VR_WALK_DONE with w->c the closest points, or VR_WALK_PENETRATING with
+ * w->pen_point; w->f the features */
 int vrWalk_Exhaustive(vrWalk *w);
+/* the same over every feature (the definition, for the tests) */
+int vrWalk_ExhaustiveAll(vrWalk *w);
 
 #endif

@@ -7,6 +7,7 @@
  * checked against the plain method, to the bit. */
 #include <stdlib.h>
 #include <string.h>
+#include "closest.h"
 #include "contact.h"
 #include "face_groups.h"
 #include "primitives.h"
@@ -202,11 +203,85 @@ static int test_the_vertices_above_a_plane_are_all_met_once(void)
     return 0;
 }
 
+/* b's centre placed so that its lowest vertex along u lies delta beyond
+ * a's highest, along u: their distance delta when delta >= 0 (touches to
+ * 1e-12 m), an overlap of about -delta when below */
+static vec3 beyond_along(const vrPolyhedron *a, const vrPose *pa, const vrPolyhedron *b, const vrPose *pb, vec3 u,
+                         double delta)
+{
+    vec3 top = vrPose_apply(pa, a->vert[0]), bottom = vrPose_apply(pb, b->vert[0]);
+    int v;
+    for (v = 1; v < a->nv; v++)
+        if (vec3_dot(u, vrPose_apply(pa, a->vert[v])) > vec3_dot(u, top)) top = vrPose_apply(pa, a->vert[v]);
+    for (v = 1; v < b->nv; v++)
+        if (vec3_dot(u, vrPose_apply(pb, b->vert[v])) < vec3_dot(u, bottom)) bottom = vrPose_apply(pb, b->vert[v]);
+    return vec3_add(pb->p, vec3_sub(vec3_madd(top, delta, u), bottom));
+}
+
+static vrFeature any_feature(const vrPolyhedron *p)
+{
+    int type = (int)(uni() * 3);
+    return vrFeature_Make(type, (int)(uni() * (type == VR_VERTEX ? p->nv : type == VR_EDGE ? p->ne : p->nf)));
+}
+
+/* The exhaustive search the walk falls back on looks only at the
+ * features in a slab between the bodies (closest_exhaustive.c; over every
+ * pair, two touching 150 x 150 superquadrics took tens of seconds a
+ * search).  Hulls coarse and finer (up to 900 points), vertex to vertex along a random
+ * direction from 1 mm into each other to 5 cm apart (touches to 1e-12 m
+ * among them), the search starting from random features: the same distance, points,
+ * overlap flag and features as the search over every pair, to the bit. */
+static int test_the_exhaustive_search_in_the_slab_is_the_search_over_every_pair(void)
+{
+    static const double delta[] = {-1e-3, -1e-9, -1e-12, 0, 1e-12, 1e-9, 1e-6, 1e-3, 0.05};
+    vrPolyhedron *fine[3], *coarse[3];
+    char err[256];
+    int s, i, k, pen_seen = 0, apart_seen = 0, n = 0;
+    memset(fine, 0, sizeof fine);
+    memset(coarse, 0, sizeof coarse);
+    ENSURE(vrPolyhedron_Superquadric(1, 1, vec3_make(0.4, 0.3, 0.35), 24, 24, &fine[0], err, sizeof err) == 0);
+    ENSURE(vrPolyhedron_Superquadric(0.1, 0.1, vec3_make(0.5, 0.3, 0.2), 24, 24, &fine[1], err, sizeof err) == 0);
+    ENSURE(vrPolyhedron_Superquadric(0.6, 1.6, vec3_make(0.3, 0.4, 0.3), 30, 30, &fine[2], err, sizeof err) == 0);
+    ENSURE(vrPolyhedron_Superquadric(1, 1, vec3_make(0.4, 0.3, 0.35), 10, 10, &coarse[0], err, sizeof err) == 0);
+    ENSURE(vrPolyhedron_Superquadric(0.1, 0.1, vec3_make(0.5, 0.3, 0.2), 12, 12, &coarse[1], err, sizeof err) == 0);
+    ENSURE(vrPolyhedron_Cube(vec3_make(0.3, 0.2, 0.1), &coarse[2], err, sizeof err) == 0);
+    for (s = 0; s < 3; s++)
+        for (i = 0; i < 9 * (s == 0 ? 20 : 1); i++) {
+            /* s = 0: coarse against coarse; 1: fine against coarse; 2: fine against fine */
+            const vrPolyhedron *a = s == 0 ? coarse[i % 3] : fine[i % 3], *b = s < 2 ? coarse[(i / 3) % 3] : fine[(i + 1) % 3];
+            vrPose pa = random_pose(rvec(1)), pb = random_pose(vec3_zero());
+            vec3 u = vec3_normalize(rvec(1)), ca[2], cb[2];
+            vrWalkCache c[2];
+            double d[2];
+            int pen[2];
+            pb.p = beyond_along(a, &pa, b, &pb, u, delta[i % 9]);
+            memset(c, 0, sizeof c);
+            c[0].a = any_feature(a), c[0].b = any_feature(b), c[0].valid = 1;
+            c[1] = c[0];
+            d[0] = vrClosest_Exhaustive(a, &pa, b, &pb, &c[0], &ca[0], &cb[0], &pen[0]);
+            d[1] = vrClosest_ExhaustiveAll(a, &pa, b, &pb, &c[1], &ca[1], &cb[1], &pen[1]);
+            ENSURE_MSG(d[0] == d[1] && pen[0] == pen[1] && same(ca[0], ca[1]) && same(cb[0], cb[1]),
+                       "case %d,%d (delta %g): %.17g against %.17g, overlap %d against %d", s, i, delta[i % 9], d[0],
+                       d[1], pen[0], pen[1]);
+            ENSURE_MSG(c[0].a.type == c[1].a.type && c[0].a.index == c[1].a.index && c[0].b.type == c[1].b.type
+                           && c[0].b.index == c[1].b.index,
+                       "case %d,%d: other features", s, i);
+            pen_seen += pen[0], apart_seen += !pen[0] && d[0] < 1e-6;
+            n++;
+        }
+    for (k = 0; k < 3; k++) vrPolyhedron_Free(coarse[k]);
+    free_hulls(fine);
+    printf("    %d searches: %d overlapping, %d apart by under 1e-6 m\n", n, pen_seen, apart_seen);
+    ENSURE(pen_seen > 20 && apart_seen > 20);
+    return 0;
+}
+
 static const vrTest tests[] = {
     TEST(test_a_climbed_support_is_the_scanned_one),
     TEST(test_face_group_bounds_hold),
     TEST(test_a_touch_of_grouped_hulls_is_the_touch_of_every_face),
     TEST(test_the_vertices_above_a_plane_are_all_met_once),
+    TEST(test_the_exhaustive_search_in_the_slab_is_the_search_over_every_pair),
 };
 
 const vrTestSuite vrSuite_FineHulls = {"fine_hulls", tests, TEST_COUNT(tests), NULL, NULL, 0};
