@@ -185,7 +185,7 @@ static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
     vrTopBound t;
     vec3 best = vec3_zero();
     double floor_gap, top_gap, kept[KEPT_BOUNDS], gb[2][VR_FACE_GROUPS_MOST];
-    int side, f, k, nf_a = g->a->p->nf, cand[CANDIDATES_MOST];
+    int side, f, k, best_k, nf_a = g->a->p->nf, cand[CANDIDATES_MOST];
     fb[0] = face_bound(g->a, cb, vrPosed_Vertex(g->b, g->vb));
     fb[1] = face_bound(g->b, ca, vrPosed_Vertex(g->a, g->va));
     if (g->a->p->groups) group_bounds(g->a->p->groups, &fb[0], gb[0]);
@@ -195,20 +195,24 @@ static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
     best_bound(g->b->p, &fb[1], gb[1], 1, nf_a, &t, kept);
     top_gap = vrGap_AlongFrom(&warm, face_axis(g, t.side, t.f));
     floor_gap = top_gap - BOUND_SLACK;
-    *gap = -HUGE_VAL;
+    /* the best so far, the best-bounded face's to begin with: a face
+     * whose bound lies below it (less the bounds' slack) cannot reach it,
+     * and is not measured; the first face of the largest gap wins */
+    *gap = top_gap, best = face_axis(g, t.side, t.f), best_k = t.k;
     for (side = 0; side < 2; side++) {
         const vrPolyhedron *p = side ? g->b->p : g->a->p;
         int k0 = side ? nf_a : 0, n = p->groups ? candidates(p, &fb[side], gb[side], floor_gap, cand) : -1, i;
         for (i = 0; i < (n >= 0 ? n : p->nf); i++) {
             vec3 u;
-            double h;
+            double h, ub;
             f = n >= 0 ? cand[i] : i;
             k = k0 + f;
             /* NOLINTNEXTLINE(clang-analyzer-core.UndefinedBinaryOperatorResult): the first pass wrote kept[k], the same faces in the same order */
-            if (n < 0 && (k < KEPT_BOUNDS && !p->groups ? kept[k] : gap_bound(&fb[side], p, f)) < floor_gap) continue;
+            ub = k < KEPT_BOUNDS && !p->groups ? kept[k] : gap_bound(&fb[side], p, f);
+            if (k == best_k || ub < *gap - BOUND_SLACK) continue;
             u = face_axis(g, side, f);
-            h = side == t.side && f == t.f ? top_gap : vrGap_AlongFrom(&warm, u);   /* measured once */
-            if (h > *gap) *gap = h, best = u;
+            h = vrGap_AlongFrom(&warm, u);
+            if (h > *gap || (h == *gap && k < best_k)) *gap = h, best = u, best_k = k;
         }
     }
     return best;
