@@ -183,7 +183,7 @@ static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
     vrFaceBound fb[2];
     vrGap warm = *g;   /* its climbs start where the last one ended */
     vrTopBound t;
-    vec3 best = vec3_zero();
+    vec3 best;
     double floor_gap, top_gap, kept[KEPT_BOUNDS], gb[2][VR_FACE_GROUPS_MOST];
     int side, f, k, best_k, nf_a = g->a->p->nf, cand[CANDIDATES_MOST];
     fb[0] = face_bound(g->a, cb, vrPosed_Vertex(g->b, g->vb));
