@@ -110,7 +110,7 @@ static void cull_make(const vrWalk *w, Cull *c)
 {
     vec3 cand[5], best = vec3_zero(), d = vec3_sub(vert0(w, 1, vrFeature_Vertex(w->p[1], w->f[1])),
                                                   vert0(w, 0, vrFeature_Vertex(w->p[0], w->f[0])));
-    double g = walk_gap(w), most = -HUGE_VAL, hi0, lo1, size = w->p[0]->r_out + w->p[1]->r_out + vec3_len(w->t);
+    double g = walk_gap(w), most = -HUGE_VAL, hi0 = 0, lo1 = 0, size = w->p[0]->r_out + w->p[1]->r_out + vec3_len(w->t);
     size_t n = 0;
     int k, m = 0, i, v, e, f;
     unsigned char *at;
@@ -119,13 +119,13 @@ static void cull_make(const vrWalk *w, Cull *c)
     m += beside(w, 0, cand + m);
     m += beside(w, 1, cand + m);
     for (k = 0; k < m; k++) {
-        extents(w, cand[k], &hi0, &lo1);
-        if (lo1 - hi0 > most) most = lo1 - hi0, best = cand[k];
+        double hi, lo;
+        extents(w, cand[k], &hi, &lo);
+        if (lo - hi > most) most = lo - hi, best = cand[k], hi0 = hi, lo1 = lo;
     }
     if (m == 0 || !isfinite(g) || !isfinite(most)) return;
     for (i = 0; i < 2; i++) n += (size_t)w->p[i]->nv + (size_t)w->p[i]->ne + (size_t)w->p[i]->nf;
     if (!(c->mem = malloc(n))) return;
-    extents(w, best, &hi0, &lo1);
     at = c->mem;
     for (i = 0; i < 2; i++) {
         const vrPolyhedron *p = w->p[i];

@@ -98,8 +98,8 @@ static vec3 face_axis(const vrGap *g, int side, int f)
 
 /* the face normal (a's, or minus b's) along which a and b are farthest
  * apart, and that gap; a's first face on a tie.  A face whose bound
- * (gap_bound) lies below the gap of the face with the best bound cannot
- * win and is not measured: the same answer as measuring every face, from
+ * (gap_bound) lies below the largest gap measured so far (the face with
+ * the best bound's, first) cannot win and is not measured: the same answer as measuring every face, from
  * a few support climbs instead of two for every face of both shapes (a
  * superquadric's hundreds, at every halving of a touch's bisection).  A
  * big hull's faces are bounded a group at a time (face_groups.h), so that
