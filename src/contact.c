@@ -195,9 +195,6 @@ static vec3 touching_axis(const vrGap *g, vec3 ca, vec3 cb, double *gap)
     best_bound(g->b->p, &fb[1], gb[1], 1, nf_a, &t, kept);
     top_gap = vrGap_AlongFrom(&warm, face_axis(g, t.side, t.f));
     floor_gap = top_gap - BOUND_SLACK;
-    /* the best so far, the best-bounded face's to begin with: a face
-     * whose bound lies below it (less the bounds' slack) cannot reach it,
-     * and is not measured; the first face of the largest gap wins */
     *gap = top_gap, best = face_axis(g, t.side, t.f), best_k = t.k;
     for (side = 0; side < 2; side++) {
         const vrPolyhedron *p = side ? g->b->p : g->a->p;
